@@ -1,0 +1,144 @@
+//! Exercise 3 of the lesson: implement the physics from scratch.
+//!
+//! Run it: `cargo run --release --example starter`. It writes `starter.gif` with the
+//! library's renderer, then compares your ball with the library's `Ball` frame by frame.
+//! As shipped the ball just floats (nothing moves it); fill in the three TODOs in
+//! `StarterBall::step` until it reports a match.
+
+use std::fs::File;
+use std::io::BufWriter;
+
+use bouncing_ball::ball::{Ball, Trail};
+use bouncing_ball::encode::GifWriter;
+use bouncing_ball::render::Renderer;
+use bouncing_ball::simulation::Simulation;
+use bouncing_ball::{BallSpec, Scene};
+
+const WIDTH: f64 = 320.0; // canvas width, px
+const HEIGHT: f64 = 240.0; // canvas height, px
+const RADIUS: f64 = 12.0; // ball radius, px
+const START: (f64, f64) = (40.0, 40.0); // start position, px
+const INITIAL_VEL: (f64, f64) = (5.2, 0.0); // start velocity, px/frame
+const GRAVITY: f64 = 0.5; // px/frame²
+const BOUNCE_DAMPING: f64 = 0.88; // share of speed kept at a bounce
+const TRAIL_LEN: usize = 20; // points
+const FRAMES: u32 = 200;
+
+/// Your ball.
+struct StarterBall {
+    x: f64,
+    y: f64,
+    vx: f64,
+    vy: f64,
+    radius: f64,
+    trail: Trail,
+}
+
+impl StarterBall {
+    fn step(&mut self) {
+        // TODO 1: add GRAVITY to self.vy.
+
+        // TODO 2: advance self.x by self.vx and self.y by self.vy.
+
+        // TODO 3: for each of the four walls (left, right, top, bottom), clamp the
+        // position to the wall, then flip the relevant velocity times BOUNCE_DAMPING.
+        // Left/right as one if/else, top/bottom as another.
+
+        // Given: the trail remembers where the ball is after the move.
+        self.trail.push(self.x, self.y);
+    }
+
+    /// The library's ball at the same state, so the library can draw it.
+    fn as_ball(&self) -> Ball {
+        Ball {
+            x: self.x,
+            y: self.y,
+            vx: self.vx,
+            vy: self.vy,
+            radius: self.radius,
+            trail: self.trail.clone(),
+        }
+    }
+}
+
+fn scene() -> Scene {
+    Scene {
+        width: WIDTH as u32,
+        height: HEIGHT as u32,
+        background: [0, 0, 0],
+        balls: vec![BallSpec {
+            x: START.0,
+            y: START.1,
+            vx: INITIAL_VEL.0,
+            vy: INITIAL_VEL.1,
+            radius: RADIUS,
+            colour: [255, 200, 60],
+            trail_colour: [60, 140, 255],
+            trail: TRAIL_LEN,
+        }],
+        gravity: [0.0, GRAVITY],
+        damping: BOUNCE_DAMPING,
+        frames: FRAMES,
+        frame_ms: 30,
+    }
+}
+
+fn main() -> std::io::Result<()> {
+    let scene = scene();
+    let renderer = Renderer::new(&scene).expect("the lesson's colours fit a GIF");
+    let out = BufWriter::new(File::create("starter.gif")?);
+    let mut gif = GifWriter::new(
+        out,
+        WIDTH as u16,
+        HEIGHT as u16,
+        renderer.palette(),
+        scene.frame_ms,
+    )?;
+    let mut frame = renderer.new_frame();
+
+    let mut yours = StarterBall {
+        x: START.0,
+        y: START.1,
+        vx: INITIAL_VEL.0,
+        vy: INITIAL_VEL.1,
+        radius: RADIUS,
+        trail: Trail::new(TRAIL_LEN),
+    };
+    let mut library = Simulation::new(&scene);
+    let mut first_difference = None;
+    for n in 0..FRAMES {
+        yours.step();
+        library.step();
+        let (a, b) = (yours.as_ball(), &library.balls()[0]);
+        if first_difference.is_none() && (a.x, a.y, a.vx, a.vy) != (b.x, b.y, b.vx, b.vy) {
+            first_difference = Some((n, a.clone(), b.clone()));
+        }
+        renderer.draw(&[a], &mut frame);
+        gif.write_frame(&frame)?;
+    }
+    gif.finish()?;
+    println!("wrote starter.gif ({FRAMES} frames)");
+
+    match first_difference {
+        None => {
+            println!("MATCH: your ball follows the library's Ball exactly for all {FRAMES} frames.")
+        }
+        Some((n, a, b)) => {
+            println!("MISMATCH at frame {n} (0 = after the first step):");
+            for (name, yours, library) in [
+                ("x", a.x, b.x),
+                ("y", a.y, b.y),
+                ("vx", a.vx, b.vx),
+                ("vy", a.vy, b.vy),
+            ] {
+                let marker = if yours == library {
+                    ""
+                } else {
+                    "   <- differs"
+                };
+                println!("  {name:>2}: yours {yours:<22} library {library:<22}{marker}");
+            }
+        }
+    }
+    Ok(())
+}

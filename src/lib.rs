@@ -1,0 +1,22 @@
+//! `bouncing_ball`: a bouncing-ball simulation drawn to an animated GIF and a still PNG,
+//! ported from a teaching script.
+//!
+//! One concept per module: [`ball`] and [`walls`] are the lesson's physics, [`simulation`]
+//! advances a [`scene`], [`render`] draws a frame into [`palette`] indices, [`encode`] writes
+//! GIF and PNG, [`output`] makes files appear whole, [`trace`] writes the CSV, and [`run`]
+//! ties them together for the command line.
+
+pub mod ball;
+pub mod effects;
+pub mod encode;
+pub mod output;
+pub mod palette;
+pub mod render;
+pub mod run;
+pub mod scene;
+pub mod simulation;
+pub mod trace;
+pub mod walls;
+
+pub use run::{run, Outputs, RunError, Summary};
+pub use scene::{BallSpec, Scene};

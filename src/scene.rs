@@ -1,0 +1,169 @@
+//! What to simulate: the canvas, the balls and the effects, checked before anything runs.
+//!
+//! A scene is a plain description; `Simulation` turns it into moving balls and
+//! `Renderer` into pixels.
+
+use std::fmt;
+
+/// A colour as red, green, blue.
+pub type Rgb = [u8; 3];
+
+/// The largest canvas side we accept, px: bigger frames make GIFs no viewer wants.
+pub const MAX_CANVAS_SIDE: u32 = 8192;
+/// The longest trail we accept, points: every point is drawn every frame.
+pub const MAX_TRAIL_LEN: usize = 1000;
+/// GIF stores frame delays in hundredths of a second, as a 16-bit number.
+pub const MAX_FRAME_MS: u32 = 655_350;
+
+/// Everything one run simulates and draws.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// Canvas size, px.
+    pub width: u32,
+    pub height: u32,
+    pub background: Rgb,
+    pub balls: Vec<BallSpec>,
+    /// Acceleration added to every ball's velocity each frame, px/frame².
+    pub gravity: [f64; 2],
+    /// Share of speed each wall bounce keeps (1.0 elastic, 0.0 dead stop).
+    pub damping: f64,
+    /// How many frames to simulate and draw.
+    pub frames: u32,
+    /// How long each frame shows in the GIF, ms (a multiple of 10).
+    pub frame_ms: u32,
+}
+
+/// One ball as the scene starts it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BallSpec {
+    /// Centre, px.
+    pub x: f64,
+    pub y: f64,
+    /// Velocity, px/frame.
+    pub vx: f64,
+    pub vy: f64,
+    /// Radius, px.
+    pub radius: f64,
+    pub colour: Rgb,
+    pub trail_colour: Rgb,
+    /// How many past positions the trail keeps (0: no trail).
+    pub trail: usize,
+}
+
+/// A value the scene cannot run with: which one, what it was, and what is allowed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InvalidValue {
+    /// The key, as written in a scene file (`balls[2].radius`, `damping`).
+    pub key: String,
+    pub value: String,
+    pub allowed: String,
+}
+
+impl fmt::Display for InvalidValue {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} = {} is not allowed: {}",
+            self.key, self.value, self.allowed
+        )
+    }
+}
+
+impl std::error::Error for InvalidValue {}
+
+fn invalid(key: &str, value: impl fmt::Display, allowed: impl Into<String>) -> InvalidValue {
+    InvalidValue {
+        key: key.to_string(),
+        value: value.to_string(),
+        allowed: allowed.into(),
+    }
+}
+
+fn check_finite(key: &str, value: f64) -> Result<(), InvalidValue> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(invalid(key, value, "must be a finite number"))
+    }
+}
+
+impl Scene {
+    /// Checks every value, so the simulation and the encoder never see one they cannot handle.
+    pub fn validate(&self) -> Result<(), InvalidValue> {
+        for (key, side) in [("width", self.width), ("height", self.height)] {
+            if !(1..=MAX_CANVAS_SIDE).contains(&side) {
+                return Err(invalid(
+                    key,
+                    side,
+                    format!("must be 1 to {MAX_CANVAS_SIDE} px"),
+                ));
+            }
+        }
+        check_finite("gravity", self.gravity[0])?;
+        check_finite("gravity", self.gravity[1])?;
+        check_finite("damping", self.damping)?;
+        if !(0.0..=1.0).contains(&self.damping) {
+            return Err(invalid("damping", self.damping, "must be from 0 to 1"));
+        }
+        if self.frames == 0 {
+            return Err(invalid("frames", 0, "must be at least 1"));
+        }
+        if !self.frame_ms.is_multiple_of(10) || self.frame_ms > MAX_FRAME_MS {
+            return Err(invalid(
+                "frame_ms",
+                self.frame_ms,
+                format!("must be a multiple of 10 up to {MAX_FRAME_MS} (GIF counts hundredths of a second)"),
+            ));
+        }
+        for (i, ball) in self.balls.iter().enumerate() {
+            self.validate_ball(i, ball)?;
+        }
+        Ok(())
+    }
+
+    fn validate_ball(&self, i: usize, ball: &BallSpec) -> Result<(), InvalidValue> {
+        let key = |name: &str| format!("balls[{i}].{name}");
+        for (name, value) in [
+            ("x", ball.x),
+            ("y", ball.y),
+            ("vx", ball.vx),
+            ("vy", ball.vy),
+            ("radius", ball.radius),
+        ] {
+            check_finite(&key(name), value)?;
+        }
+        let (width, height) = (f64::from(self.width), f64::from(self.height));
+        if ball.radius <= 0.0 || 2.0 * ball.radius >= width.min(height) {
+            return Err(invalid(
+                &key("radius"),
+                ball.radius,
+                format!("must be > 0 with 2·radius < width ({width}) and height ({height})"),
+            ));
+        }
+        let inside = |name: &str, value: f64, side: f64| {
+            if value < ball.radius || value > side - ball.radius {
+                Err(invalid(
+                    &key(name),
+                    value,
+                    format!(
+                        "the ball must start inside the box: {} to {} px",
+                        ball.radius,
+                        side - ball.radius
+                    ),
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        inside("x", ball.x, width)?;
+        inside("y", ball.y, height)?;
+        if ball.trail > MAX_TRAIL_LEN {
+            return Err(invalid(
+                &key("trail"),
+                ball.trail,
+                format!("must be 0 to {MAX_TRAIL_LEN} points"),
+            ));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,161 @@
+//! Helpers shared by the integration tests: the lesson's scene spelled out, a GIF decoder
+//! that composites frames as a viewer does, and golden-image comparison.
+#![allow(dead_code)] // each test file uses its own subset
+
+use std::path::{Path, PathBuf};
+
+use bouncing_ball::render::{to_rgb, Renderer};
+use bouncing_ball::simulation::Simulation;
+use bouncing_ball::{BallSpec, Scene};
+use image::RgbImage;
+
+/// The lesson's default scene, written out here so that a learner's edits to main.rs
+/// never change what the tests expect.
+pub fn lesson_scene() -> Scene {
+    Scene {
+        width: 320,
+        height: 240,
+        background: [0, 0, 0],
+        balls: vec![BallSpec {
+            x: 40.0,
+            y: 40.0,
+            vx: 5.2,
+            vy: 0.0,
+            radius: 12.0,
+            colour: [255, 200, 60],
+            trail_colour: [60, 140, 255],
+            trail: 20,
+        }],
+        gravity: [0.0, 0.5],
+        damping: 0.88,
+        frames: 200,
+        frame_ms: 30,
+    }
+}
+
+/// Every frame of `scene` as RGB, rendered by the library.
+pub fn render_frames(scene: &Scene) -> Vec<RgbImage> {
+    let renderer = Renderer::new(scene).expect("scene colours fit a GIF");
+    let mut simulation = Simulation::new(scene);
+    let mut frame = renderer.new_frame();
+    (0..scene.frames)
+        .map(|_| {
+            simulation.step();
+            renderer.draw(simulation.balls(), &mut frame);
+            to_rgb(&frame, renderer.palette())
+        })
+        .collect()
+}
+
+/// A decoded GIF: each frame as a viewer shows it, plus the timing and loop fields.
+pub struct DecodedGif {
+    pub width: u32,
+    pub height: u32,
+    pub frames: Vec<RgbImage>,
+    pub delays_cs: Vec<u16>,
+    pub repeat: gif::Repeat,
+}
+
+/// Decodes a GIF, compositing each frame over the previous one (disposal Keep and
+/// transparency), so tests see exactly what a viewer shows.
+pub fn decode_gif(path: &Path) -> DecodedGif {
+    let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("open {}: {e}", path.display()));
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::Indexed);
+    let mut decoder = options.read_info(file).expect("a valid GIF header");
+    let (width, height) = (u32::from(decoder.width()), u32::from(decoder.height()));
+    let global = decoder.global_palette().map(<[u8]>::to_vec);
+    let mut canvas = RgbImage::new(width, height);
+    let (mut frames, mut delays_cs) = (Vec::new(), Vec::new());
+    while let Some(frame) = decoder.read_next_frame().expect("a valid GIF frame") {
+        let palette = frame
+            .palette
+            .clone()
+            .or_else(|| global.clone())
+            .expect("a palette");
+        for row in 0..u32::from(frame.height) {
+            for col in 0..u32::from(frame.width) {
+                let index = frame.buffer[(row * u32::from(frame.width) + col) as usize];
+                if Some(index) == frame.transparent {
+                    continue;
+                }
+                let at = usize::from(index) * 3;
+                let rgb = image::Rgb([palette[at], palette[at + 1], palette[at + 2]]);
+                canvas.put_pixel(u32::from(frame.left) + col, u32::from(frame.top) + row, rgb);
+            }
+        }
+        frames.push(canvas.clone());
+        delays_cs.push(frame.delay);
+    }
+    DecodedGif {
+        width,
+        height,
+        frames,
+        delays_cs,
+        repeat: decoder.repeat(),
+    }
+}
+
+/// Where tests write what they produce (under the target dir, never beside the sources).
+pub fn test_output_dir() -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("golden");
+    std::fs::create_dir_all(&dir).expect("create the test output folder");
+    dir
+}
+
+/// Compares `actual` with the committed golden `tests/golden/NAME.png`, pixel by pixel.
+/// With `UPDATE_GOLDEN=1` it writes the golden instead (the only way goldens change).
+/// On a mismatch it writes `NAME.new.png` and `NAME.diff.png` and names them.
+pub fn assert_golden(name: &str, actual: &RgbImage) {
+    let golden_path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(format!("{name}.png"));
+    if std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1") {
+        actual.save(&golden_path).expect("write the golden");
+        return;
+    }
+    let golden = image::open(&golden_path)
+        .unwrap_or_else(|e| {
+            panic!(
+                "cannot read golden {}: {e} (create it with UPDATE_GOLDEN=1 cargo test)",
+                golden_path.display()
+            )
+        })
+        .to_rgb8();
+    let same_size = golden.dimensions() == actual.dimensions();
+    let differing = if same_size {
+        golden
+            .pixels()
+            .zip(actual.pixels())
+            .filter(|(g, a)| g != a)
+            .count()
+    } else {
+        usize::MAX
+    };
+    if differing == 0 {
+        return;
+    }
+    let out = test_output_dir();
+    let new_path = out.join(format!("{name}.new.png"));
+    let diff_path = out.join(format!("{name}.diff.png"));
+    actual.save(&new_path).expect("write the new image");
+    if same_size {
+        let diff = RgbImage::from_fn(actual.width(), actual.height(), |x, y| {
+            if golden.get_pixel(x, y) == actual.get_pixel(x, y) {
+                image::Rgb([0, 0, 0])
+            } else {
+                image::Rgb([255, 0, 255])
+            }
+        });
+        diff.save(&diff_path).expect("write the diff image");
+    }
+    panic!(
+        "{name}: {} pixels differ from {} (sizes {:?} vs {:?}).\n  new:  {}\n  diff: {} (magenta = differs)\n  If the change is intended, re-bless on purpose: UPDATE_GOLDEN=1 cargo test --test golden",
+        if same_size { differing.to_string() } else { "all".to_string() },
+        golden_path.display(),
+        golden.dimensions(),
+        actual.dimensions(),
+        new_path.display(),
+        diff_path.display(),
+    );
+}
