@@ -63,9 +63,6 @@ impl StarterBall {
 
 fn scene() -> Scene {
     Scene {
-        width: WIDTH as u32,
-        height: HEIGHT as u32,
-        background: [0, 0, 0],
         balls: vec![BallSpec {
             x: START.0,
             y: START.1,
@@ -76,10 +73,11 @@ fn scene() -> Scene {
             trail_colour: [60, 140, 255],
             trail: TRAIL_LEN,
         }],
-        gravity: [0.0, GRAVITY],
-        damping: BOUNCE_DAMPING,
+        gravity: Some([0.0, GRAVITY]),
+        walls: Some(BOUNCE_DAMPING),
         frames: FRAMES,
         frame_ms: 30,
+        ..Scene::empty(WIDTH as u32, HEIGHT as u32)
     }
 }
 

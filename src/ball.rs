@@ -5,6 +5,7 @@
 use std::collections::VecDeque;
 
 use crate::effects::Effects;
+use crate::motion::Motion;
 
 /// One ball, in the lesson's units: pixels and frames.
 #[derive(Clone, Debug, PartialEq)]
@@ -34,17 +35,17 @@ impl Ball {
         }
     }
 
-    /// One frame of the lesson's physics, in the lesson's order:
-    /// gravity changes the velocity, the velocity moves the ball (semi-implicit Euler),
-    /// the walls clamp and reflect, and the new position joins the trail.
-    pub fn step(&mut self, effects: &Effects) {
-        let [gx, gy] = effects.gravity;
-        self.vx += gx;
-        self.vy += gy;
-        self.x += self.vx;
-        self.y += self.vy;
-        effects.walls.bounce(self);
-        // After the move, so the trail ends where the ball is drawn (reflection question 3).
+    /// One frame: `motion` moves the ball under `effects` (the default is the lesson's:
+    /// gravity changes the velocity, the velocity moves the ball, walls clamp and reflect;
+    /// see `Integrator::step` and `Walls::bounce`), then the new position joins the trail.
+    pub fn step(&mut self, effects: &Effects, motion: &Motion) {
+        motion.advance(self, effects);
+        self.record_trail();
+    }
+
+    /// Appends the current position to the trail. After the move, so the trail ends where the
+    /// ball is drawn (reflection question 3).
+    pub fn record_trail(&mut self) {
         self.trail.push(self.x, self.y);
     }
 }

@@ -1,11 +1,29 @@
-//! The physics a scene calls for, ready to apply each frame.
+//! The physics a scene calls for. Every effect is optional: an absent one is never computed.
 
+use crate::floor::Floor;
 use crate::walls::Walls;
 
-/// The forces and boundaries that act on every ball.
-#[derive(Clone, Debug, PartialEq)]
+/// The forces and boundaries that act on every ball, each present only if the scene names it.
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Effects {
     /// Added to every velocity each frame, px/frame².
-    pub gravity: [f64; 2],
-    pub walls: Walls,
+    pub gravity: Option<[f64; 2]>,
+    /// Share of speed lost to the air each frame (the lesson's `v *= 1 - drag`).
+    pub drag: Option<f64>,
+    /// The box, with its damping.
+    pub walls: Option<Walls>,
+    /// Line segments the balls bounce off (the sloped floor).
+    pub floors: Vec<Floor>,
+}
+
+impl Effects {
+    /// Clamp-then-reflect against every floor, then the box: the lesson's collision response.
+    pub fn clamp_and_reflect(&self, ball: &mut crate::ball::Ball, from: [f64; 2]) {
+        for floor in &self.floors {
+            floor.bounce(ball, from);
+        }
+        if let Some(walls) = &self.walls {
+            walls.bounce(ball);
+        }
+    }
 }

@@ -9,11 +9,17 @@
 pub mod ball;
 pub mod effects;
 pub mod encode;
+pub mod floor;
+pub mod integrator;
+pub mod motion;
 pub mod output;
+pub mod overrides;
 pub mod palette;
+pub mod random;
 pub mod render;
 pub mod run;
 pub mod scene;
+pub mod scene_file;
 pub mod simulation;
 pub mod trace;
 pub mod walls;

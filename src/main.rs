@@ -4,8 +4,13 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use bouncing_ball::integrator::Integrator;
+use bouncing_ball::motion::CollisionMode;
+use bouncing_ball::overrides::Overrides;
+use bouncing_ball::scene_file::{self, preset_names};
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene};
-use clap::Parser;
+use clap::parser::ValueSource;
+use clap::{ArgMatches, CommandFactory, FromArgMatches, Parser};
 
 // --- Canvas ---
 /// Canvas width, px.
@@ -44,9 +49,21 @@ const BALL_COLOUR: [u8; 3] = [255, 200, 60];
 const TRAIL_COLOUR: [u8; 3] = [60, 140, 255];
 
 /// Simulates a bouncing ball and writes an animated GIF and a still PNG of its last frame.
+///
+/// Without --scene or --preset it runs the lesson's scene (the constants in src/main.rs);
+/// flags typed on the command line override the scene's values (ball flags apply to every ball).
 #[derive(Parser, Debug)]
 #[command(version, about, allow_negative_numbers = true)]
 struct Args {
+    /// Load the scene from a TOML file
+    #[arg(long, conflicts_with = "preset")]
+    scene: Option<PathBuf>,
+    /// Load a bundled scene (see the README's table)
+    #[arg(long, value_parser = preset_names())]
+    preset: Option<String>,
+    /// Seed for everything random (same seed, same bytes out)
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
     /// Canvas width, px
     #[arg(long, default_value_t = WIDTH)]
     width: u32,
@@ -74,6 +91,21 @@ struct Args {
     /// Share of speed kept at each bounce, 0 to 1
     #[arg(long, default_value_t = BOUNCE_DAMPING)]
     damping: f64,
+    /// Air drag: share of speed lost per frame, 0 to 1 (the lesson's 0.998 is 0.002) [default: none]
+    #[arg(long)]
+    drag: Option<f64>,
+    /// Ball-ball collisions with this restitution, 0 to 1 [default: none]
+    #[arg(long)]
+    restitution: Option<f64>,
+    /// How each step turns forces into motion
+    #[arg(long, value_enum, default_value_t = Integrator::default())]
+    integrator: Integrator,
+    /// Steps per frame (each frame split into equal steps)
+    #[arg(long, default_value_t = 1)]
+    substeps: u32,
+    /// How wall and floor contacts are resolved
+    #[arg(long, value_enum, default_value_t = CollisionMode::default())]
+    collisions: CollisionMode,
     /// Trail length, points (0: no trail)
     #[arg(long, default_value_t = TRAIL_LEN)]
     trail: usize,
@@ -97,27 +129,62 @@ struct Args {
     quiet: bool,
 }
 
+/// The lesson's scene, from the constants at the top of this file.
+fn lesson_scene() -> Scene {
+    Scene {
+        background: BACKGROUND,
+        balls: vec![BallSpec {
+            x: START.0,
+            y: START.1,
+            vx: INITIAL_VEL.0,
+            vy: INITIAL_VEL.1,
+            radius: RADIUS,
+            colour: BALL_COLOUR,
+            trail_colour: TRAIL_COLOUR,
+            trail: TRAIL_LEN,
+        }],
+        gravity: Some([0.0, GRAVITY]),
+        walls: Some(BOUNCE_DAMPING),
+        frames: FRAMES,
+        frame_ms: FRAME_MS,
+        ..Scene::empty(WIDTH, HEIGHT)
+    }
+}
+
 impl Args {
-    fn scene(&self) -> Scene {
-        Scene {
-            width: self.width,
-            height: self.height,
-            background: BACKGROUND,
-            balls: vec![BallSpec {
-                x: self.x,
-                y: self.y,
-                vx: self.vx,
-                vy: self.vy,
-                radius: self.radius,
-                colour: BALL_COLOUR,
-                trail_colour: TRAIL_COLOUR,
-                trail: self.trail,
-            }],
-            gravity: [0.0, self.gravity],
-            damping: self.damping,
-            frames: self.frames,
-            frame_ms: self.frame_ms,
+    /// The values the user typed (not clap's defaults), to lay over the chosen scene.
+    fn overrides(&self, matches: &ArgMatches) -> Overrides {
+        let typed = |id: &str| matches.value_source(id) == Some(ValueSource::CommandLine);
+        Overrides {
+            width: typed("width").then_some(self.width),
+            height: typed("height").then_some(self.height),
+            radius: typed("radius").then_some(self.radius),
+            x: typed("x").then_some(self.x),
+            y: typed("y").then_some(self.y),
+            vx: typed("vx").then_some(self.vx),
+            vy: typed("vy").then_some(self.vy),
+            gravity: typed("gravity").then_some(self.gravity),
+            damping: typed("damping").then_some(self.damping),
+            drag: self.drag,
+            restitution: self.restitution,
+            trail: typed("trail").then_some(self.trail),
+            frames: typed("frames").then_some(self.frames),
+            frame_ms: typed("frame_ms").then_some(self.frame_ms),
+            integrator: typed("integrator").then_some(self.integrator),
+            substeps: typed("substeps").then_some(self.substeps),
+            collisions: typed("collisions").then_some(self.collisions),
         }
+    }
+
+    /// The scene to run: a file, a preset or the lesson's, with the typed flags laid over it.
+    fn scene(&self, matches: &ArgMatches) -> Result<Scene, scene_file::SceneFileError> {
+        let mut scene = match (&self.scene, &self.preset) {
+            (Some(path), _) => scene_file::load(path, self.seed)?,
+            (None, Some(name)) => scene_file::preset(name, self.seed)?,
+            (None, None) => lesson_scene(),
+        };
+        self.overrides(matches).apply(&mut scene);
+        Ok(scene)
     }
 }
 
@@ -128,13 +195,24 @@ fn flag(key: &str) -> String {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let matches = Args::command().get_matches();
+    let args = match Args::from_arg_matches(&matches) {
+        Ok(args) => args,
+        Err(error) => error.exit(),
+    };
+    let scene = match args.scene(&matches) {
+        Ok(scene) => scene,
+        Err(error) => {
+            eprintln!("error: {error}");
+            return ExitCode::from(2);
+        }
+    };
     let outputs = Outputs {
         gif: args.gif.clone(),
         png: args.png.clone(),
         trace: args.trace.clone(),
     };
-    match run(&args.scene(), &outputs) {
+    match run(&scene, &outputs) {
         Ok(summary) => {
             if !args.quiet {
                 println!(

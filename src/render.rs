@@ -4,9 +4,10 @@
 //! Drawing only: it reads where the balls are and never moves them.
 
 use image::{GrayImage, Luma};
-use imageproc::drawing::draw_filled_circle_mut;
+use imageproc::drawing::{draw_filled_circle_mut, draw_line_segment_mut};
 
 use crate::ball::Ball;
+use crate::floor::Floor;
 use crate::palette::{fade, fade_levels, quantised_fade, shade, Palette, TooManyColours};
 use crate::scene::Scene;
 
@@ -20,6 +21,8 @@ pub struct Renderer {
     height: u32,
     palette: Palette,
     background: u8,
+    floors: Vec<Floor>,
+    floor: u8,
     styles: Vec<BallStyle>,
 }
 
@@ -40,7 +43,9 @@ impl BallStyle {
 impl Renderer {
     /// Builds the palette for a (validated) scene.
     pub fn new(scene: &Scene) -> Result<Renderer, TooManyColours> {
+        let floor_colour = (!scene.floors.is_empty()).then_some(scene.floor_colour);
         let solid: Vec<_> = std::iter::once(scene.background)
+            .chain(floor_colour)
             .chain(scene.balls.iter().map(|b| b.colour))
             .collect();
         let trails: Vec<_> = scene
@@ -54,6 +59,10 @@ impl Renderer {
             needed: solid.len(),
         };
         let background = palette.insert(scene.background).ok_or_else(too_many)?;
+        let floor = match floor_colour {
+            Some(colour) => palette.insert(colour).ok_or_else(too_many)?,
+            None => background,
+        };
         let mut styles = Vec::with_capacity(scene.balls.len());
         for spec in &scene.balls {
             let ball = palette.insert(spec.colour).ok_or_else(too_many)?;
@@ -74,6 +83,8 @@ impl Renderer {
             height: scene.height,
             palette,
             background,
+            floors: scene.floors.clone(),
+            floor,
             styles,
         })
     }
@@ -88,10 +99,19 @@ impl Renderer {
         GrayImage::from_pixel(self.width, self.height, Luma([self.background]))
     }
 
-    /// Draws `balls` into `frame`: background, then every trail (oldest dot first, fading
+    /// Draws `balls` into `frame`: background and floors, then every trail (oldest dot first, fading
     /// and shrinking into the past), then every ball on top, so no trail hides a ball.
     pub fn draw(&self, balls: &[Ball], frame: &mut IndexedFrame) {
         frame.fill(self.background);
+        for floor in &self.floors {
+            let point = |[x, y]: [f64; 2]| (x as f32, y as f32);
+            draw_line_segment_mut(
+                frame,
+                point(floor.from),
+                point(floor.to),
+                Luma([self.floor]),
+            );
+        }
         for (ball, style) in balls.iter().zip(&self.styles) {
             let n = ball.trail.len();
             for (i, &(x, y)) in ball.trail.iter().enumerate() {

@@ -1,9 +1,12 @@
 //! What to simulate: the canvas, the balls and the effects, checked before anything runs.
 //!
 //! A scene is a plain description; `Simulation` turns it into moving balls and
-//! `Renderer` into pixels.
+//! `Renderer` into pixels. Every effect is optional and runs only if the scene names it.
 
 use std::fmt;
+
+use crate::floor::Floor;
+use crate::motion::Motion;
 
 /// A colour as red, green, blue.
 pub type Rgb = [u8; 3];
@@ -12,6 +15,10 @@ pub type Rgb = [u8; 3];
 pub const MAX_CANVAS_SIDE: u32 = 8192;
 /// The longest trail we accept, points: every point is drawn every frame.
 pub const MAX_TRAIL_LEN: usize = 1000;
+/// The most balls a scene may hold.
+pub const MAX_BALLS: usize = 1_000_000;
+/// The most substeps a frame may be split into.
+pub const MAX_SUBSTEPS: u32 = 10_000;
 /// GIF stores frame delays in hundredths of a second, as a 16-bit number.
 pub const MAX_FRAME_MS: u32 = 655_350;
 
@@ -23,10 +30,21 @@ pub struct Scene {
     pub height: u32,
     pub background: Rgb,
     pub balls: Vec<BallSpec>,
-    /// Acceleration added to every ball's velocity each frame, px/frame².
-    pub gravity: [f64; 2],
-    /// Share of speed each wall bounce keeps (1.0 elastic, 0.0 dead stop).
-    pub damping: f64,
+    /// Acceleration added to every ball's velocity each frame, px/frame² (None: no gravity).
+    pub gravity: Option<[f64; 2]>,
+    /// Share of speed lost to the air each frame, 0 to 1 (None: no drag).
+    pub drag: Option<f64>,
+    /// The box's damping: share of speed each wall bounce keeps, 1 elastic, 0 dead stop
+    /// (None: no walls).
+    pub walls: Option<f64>,
+    /// Segments the balls bounce off, each with its own damping.
+    pub floors: Vec<Floor>,
+    /// Colour floors are drawn in.
+    pub floor_colour: Rgb,
+    /// Ball-ball collisions and their restitution, 0 to 1 (None: balls pass through each other).
+    pub ball_collisions: Option<f64>,
+    /// Integrator, substeps and collision mode.
+    pub motion: Motion,
     /// How many frames to simulate and draw.
     pub frames: u32,
     /// How long each frame shows in the GIF, ms (a multiple of 10).
@@ -79,6 +97,15 @@ fn invalid(key: &str, value: impl fmt::Display, allowed: impl Into<String>) -> I
     }
 }
 
+/// A share of something, such as damping: a finite number from 0 to 1.
+fn check_share(key: &str, value: f64) -> Result<(), InvalidValue> {
+    if (0.0..=1.0).contains(&value) {
+        Ok(())
+    } else {
+        Err(invalid(key, value, "must be from 0 to 1"))
+    }
+}
+
 fn check_finite(key: &str, value: f64) -> Result<(), InvalidValue> {
     if value.is_finite() {
         Ok(())
@@ -88,6 +115,26 @@ fn check_finite(key: &str, value: f64) -> Result<(), InvalidValue> {
 }
 
 impl Scene {
+    /// A black `width` × `height` canvas with no balls and no effects, one frame at 30 ms:
+    /// a base to fill in with struct-update syntax.
+    pub fn empty(width: u32, height: u32) -> Scene {
+        Scene {
+            width,
+            height,
+            background: [0, 0, 0],
+            balls: Vec::new(),
+            gravity: None,
+            drag: None,
+            walls: None,
+            floors: Vec::new(),
+            floor_colour: [200, 200, 200],
+            ball_collisions: None,
+            motion: Motion::default(),
+            frames: 1,
+            frame_ms: 30,
+        }
+    }
+
     /// Checks every value, so the simulation and the encoder never see one they cannot handle.
     pub fn validate(&self) -> Result<(), InvalidValue> {
         for (key, side) in [("width", self.width), ("height", self.height)] {
@@ -99,11 +146,40 @@ impl Scene {
                 ));
             }
         }
-        check_finite("gravity", self.gravity[0])?;
-        check_finite("gravity", self.gravity[1])?;
-        check_finite("damping", self.damping)?;
-        if !(0.0..=1.0).contains(&self.damping) {
-            return Err(invalid("damping", self.damping, "must be from 0 to 1"));
+        if let Some(gravity) = self.gravity {
+            check_finite("gravity", gravity[0])?;
+            check_finite("gravity", gravity[1])?;
+        }
+        if let Some(drag) = self.drag {
+            check_share("drag", drag)?;
+        }
+        if let Some(damping) = self.walls {
+            check_share("damping", damping)?;
+        }
+        if let Some(restitution) = self.ball_collisions {
+            check_share("restitution", restitution)?;
+        }
+        for (i, floor) in self.floors.iter().enumerate() {
+            let key = |name: &str| format!("floors[{i}].{name}");
+            for (name, [x, y]) in [("from", floor.from), ("to", floor.to)] {
+                check_finite(&key(name), x)?;
+                check_finite(&key(name), y)?;
+            }
+            if floor.from == floor.to {
+                return Err(invalid(
+                    &key("to"),
+                    format!("{:?}", floor.to),
+                    "must differ from `from`",
+                ));
+            }
+            check_share(&key("damping"), floor.damping)?;
+        }
+        if !(1..=MAX_SUBSTEPS).contains(&self.motion.substeps) {
+            return Err(invalid(
+                "substeps",
+                self.motion.substeps,
+                format!("must be 1 to {MAX_SUBSTEPS}"),
+            ));
         }
         if self.frames == 0 {
             return Err(invalid("frames", 0, "must be at least 1"));
@@ -113,6 +189,13 @@ impl Scene {
                 "frame_ms",
                 self.frame_ms,
                 format!("must be a multiple of 10 up to {MAX_FRAME_MS} (GIF counts hundredths of a second)"),
+            ));
+        }
+        if self.balls.len() > MAX_BALLS {
+            return Err(invalid(
+                "balls",
+                self.balls.len(),
+                format!("must be at most {MAX_BALLS} balls"),
             ));
         }
         for (i, ball) in self.balls.iter().enumerate() {

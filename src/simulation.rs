@@ -2,6 +2,7 @@
 
 use crate::ball::Ball;
 use crate::effects::Effects;
+use crate::motion::Motion;
 use crate::scene::Scene;
 use crate::walls::Walls;
 
@@ -10,6 +11,7 @@ use crate::walls::Walls;
 pub struct Simulation {
     balls: Vec<Ball>,
     effects: Effects,
+    motion: Motion,
 }
 
 impl Simulation {
@@ -22,19 +24,25 @@ impl Simulation {
             .collect();
         let effects = Effects {
             gravity: scene.gravity,
-            walls: Walls {
+            drag: scene.drag,
+            walls: scene.walls.map(|damping| Walls {
                 width: f64::from(scene.width),
                 height: f64::from(scene.height),
-                damping: scene.damping,
-            },
+                damping,
+            }),
+            floors: scene.floors.clone(),
         };
-        Simulation { balls, effects }
+        Simulation {
+            balls,
+            effects,
+            motion: scene.motion,
+        }
     }
 
     /// Advances every ball by one frame.
     pub fn step(&mut self) {
         for ball in &mut self.balls {
-            ball.step(&self.effects);
+            ball.step(&self.effects, &self.motion);
         }
     }
 

@@ -137,11 +137,15 @@ fn help_lists_every_flag_with_its_unit_and_default() {
         ("--frames", "Frames", "200"),
         ("--frame-ms", "ms", "30"),
     ] {
-        let line = help
+        // The flag's block: its line and the description lines up to the next flag.
+        let mut block = help
             .lines()
-            .skip_while(|l| !l.trim_start().starts_with(flag))
-            .take(2)
-            .collect::<String>();
+            .skip_while(|l| !l.trim_start().starts_with(&format!("{flag} ")));
+        let first = block.next().unwrap_or_default().to_string();
+        let line = first
+            + &block
+                .take_while(|l| !l.trim_start().starts_with('-'))
+                .collect::<String>();
         assert!(
             line.contains(unit) && line.contains(&format!("[default: {default}]")),
             "{flag}: expected unit {unit:?} and default {default}, help says {line:?}"

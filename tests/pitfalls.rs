@@ -4,6 +4,7 @@ mod common;
 
 use bouncing_ball::ball::Ball;
 use bouncing_ball::effects::Effects;
+use bouncing_ball::motion::Motion;
 use bouncing_ball::render::{to_rgb, Renderer};
 use bouncing_ball::simulation::Simulation;
 use bouncing_ball::walls::Walls;
@@ -11,12 +12,13 @@ use common::lesson_scene;
 
 fn lesson_effects(damping: f64) -> Effects {
     Effects {
-        gravity: [0.0, 0.5],
-        walls: Walls {
+        gravity: Some([0.0, 0.5]),
+        walls: Some(Walls {
             width: 320.0,
             height: 240.0,
             damping,
-        },
+        }),
+        ..Effects::default()
     }
 }
 
@@ -24,7 +26,7 @@ fn lesson_effects(damping: f64) -> Effects {
 fn position_is_clamped_in_the_same_frame_as_the_reflection() {
     // Falling at 30 px/frame from 10 px above the floor's contact line: the step overshoots by 20.5 px.
     let mut ball = Ball::new(100.0, 218.0, 0.0, 30.0, 12.0, 20);
-    ball.step(&lesson_effects(0.88));
+    ball.step(&lesson_effects(0.88), &Motion::default());
     let expected_y = 240.0 - 12.0;
     let expected_vy = -(30.0 + 0.5) * 0.88;
     assert_eq!(
@@ -38,7 +40,7 @@ fn position_is_clamped_in_the_same_frame_as_the_reflection() {
         ball.vy
     );
     // And the next frame moves it up, away from the wall: no second flip, no jitter.
-    ball.step(&lesson_effects(0.88));
+    ball.step(&lesson_effects(0.88), &Motion::default());
     assert!(
         ball.y < expected_y,
         "the frame after a bounce must leave the wall: y = {}",
@@ -50,7 +52,7 @@ fn position_is_clamped_in_the_same_frame_as_the_reflection() {
 fn gravity_is_added_once_per_frame_not_again_at_a_bounce() {
     // Elastic bounce: the rebound speed is exactly the impact speed, which had one frame of gravity.
     let mut ball = Ball::new(100.0, 220.0, 0.0, 10.0, 12.0, 0);
-    ball.step(&lesson_effects(1.0));
+    ball.step(&lesson_effects(1.0), &Motion::default());
     let expected_vy = -(10.0 + 0.5);
     assert_eq!(
         ball.vy, expected_vy,
@@ -60,7 +62,7 @@ fn gravity_is_added_once_per_frame_not_again_at_a_bounce() {
     // In free flight, each frame adds exactly g.
     let mut ball = Ball::new(100.0, 100.0, 0.0, 0.0, 12.0, 0);
     for frame in 1..=10 {
-        ball.step(&lesson_effects(1.0));
+        ball.step(&lesson_effects(1.0), &Motion::default());
         let expected = 0.5 * f64::from(frame);
         assert_eq!(
             ball.vy, expected,
@@ -74,7 +76,7 @@ fn gravity_is_added_once_per_frame_not_again_at_a_bounce() {
 fn trail_never_grows_longer_than_trail_len() {
     let mut ball = Ball::new(40.0, 40.0, 5.2, 0.0, 12.0, 20);
     for frame in 1..=1000 {
-        ball.step(&lesson_effects(0.88));
+        ball.step(&lesson_effects(0.88), &Motion::default());
         let expected = frame.min(20);
         assert_eq!(
             ball.trail.len(),
@@ -119,11 +121,11 @@ fn sub_pixel_motion_is_kept() {
     // Integer positions would round 0.1 px/frame away and freeze the ball.
     let mut ball = Ball::new(100.0, 100.0, 0.1, 0.0, 12.0, 0);
     let effects = Effects {
-        gravity: [0.0, 0.0],
+        gravity: None,
         ..lesson_effects(1.0)
     };
     for _ in 0..10 {
-        ball.step(&effects);
+        ball.step(&effects, &Motion::default());
     }
     let moved = ball.x - 100.0;
     assert!(

@@ -13,9 +13,6 @@ use image::RgbImage;
 /// never change what the tests expect.
 pub fn lesson_scene() -> Scene {
     Scene {
-        width: 320,
-        height: 240,
-        background: [0, 0, 0],
         balls: vec![BallSpec {
             x: 40.0,
             y: 40.0,
@@ -26,10 +23,11 @@ pub fn lesson_scene() -> Scene {
             trail_colour: [60, 140, 255],
             trail: 20,
         }],
-        gravity: [0.0, 0.5],
-        damping: 0.88,
+        gravity: Some([0.0, 0.5]),
+        walls: Some(0.88),
         frames: 200,
         frame_ms: 30,
+        ..Scene::empty(320, 240)
     }
 }
 
