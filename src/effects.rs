@@ -2,6 +2,7 @@
 
 use crate::floor::Floor;
 use crate::walls::Walls;
+use crate::work::{tally, Work};
 
 /// The forces and boundaries that act on every ball, each present only if the scene names it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -20,9 +21,11 @@ impl Effects {
     /// Clamp-then-reflect against every floor, then the box: the lesson's collision response.
     pub fn clamp_and_reflect(&self, ball: &mut crate::ball::Ball, from: [f64; 2]) {
         for floor in &self.floors {
+            tally(Work::Floor);
             floor.bounce(ball, from);
         }
         if let Some(walls) = &self.walls {
+            tally(Work::Walls);
             walls.bounce(ball);
         }
     }

@@ -3,6 +3,7 @@
 
 use crate::ball::Ball;
 use crate::effects::Effects;
+use crate::work::{tally, Work};
 
 /// Which integration method advances the balls.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
@@ -25,10 +26,12 @@ impl Integrator {
 /// With `dt = 1` this is exactly the lesson's arithmetic (`x * 1.0` and `powf(1.0)` are exact).
 fn semi_implicit_euler(ball: &mut Ball, effects: &Effects, dt: f64) {
     if let Some([gx, gy]) = effects.gravity {
+        tally(Work::Gravity);
         ball.vx += gx * dt;
         ball.vy += gy * dt;
     }
     if let Some(drag) = effects.drag {
+        tally(Work::Drag);
         let keep = (1.0 - drag).powf(dt);
         ball.vx *= keep;
         ball.vy *= keep;

@@ -23,6 +23,7 @@ pub mod scene_file;
 pub mod simulation;
 pub mod trace;
 pub mod walls;
+pub mod work;
 
 pub use run::{run, Outputs, RunError, Summary};
 pub use scene::{BallSpec, Scene};

@@ -1,0 +1,55 @@
+//! A tally of the work each effect does, kept in debug builds only (tests run them), so a
+//! test can prove that an effect a scene does not call for never runs. Release builds
+//! compile every `tally` to nothing.
+
+/// A piece of per-frame work that only some scenes call for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Work {
+    /// Gravity added to one ball's velocity.
+    Gravity,
+    /// Drag applied to one ball's velocity.
+    Drag,
+    /// One ball checked against the box.
+    Walls,
+    /// One ball checked against one floor segment.
+    Floor,
+    /// One ball-ball pass over the whole scene (building the broad-phase grid).
+    BallCollisions,
+}
+
+const KINDS: usize = 5;
+
+#[cfg(debug_assertions)]
+thread_local! {
+    static COUNTS: std::cell::Cell<[u64; KINDS]> = const { std::cell::Cell::new([0; KINDS]) };
+}
+
+/// Counts one unit of `work` on this thread (debug builds only).
+#[inline(always)]
+pub fn tally(work: Work) {
+    #[cfg(debug_assertions)]
+    COUNTS.with(|counts| {
+        let mut c = counts.get();
+        c[work as usize] += 1;
+        counts.set(c);
+    });
+    #[cfg(not(debug_assertions))]
+    let _ = work;
+}
+
+/// How much `work` this thread has done since the last `reset` (always 0 in release builds).
+pub fn count(work: Work) -> u64 {
+    #[cfg(debug_assertions)]
+    return COUNTS.with(|counts| counts.get()[work as usize]);
+    #[cfg(not(debug_assertions))]
+    {
+        let _ = work;
+        0
+    }
+}
+
+/// Sets every count on this thread back to 0.
+pub fn reset() {
+    #[cfg(debug_assertions)]
+    COUNTS.with(|counts| counts.set([0; KINDS]));
+}

@@ -1,0 +1,128 @@
+//! Floors (sloped segments): clamp along the normal, reflect the normal component with
+//! damping, keep the tangential one; no tunnelling; end points bounce like points.
+
+use bouncing_ball::ball::Ball;
+use bouncing_ball::effects::Effects;
+use bouncing_ball::floor::Floor;
+use bouncing_ball::motion::Motion;
+
+fn floor_only(floor: Floor, gravity: Option<[f64; 2]>) -> Effects {
+    Effects {
+        gravity,
+        floors: vec![floor],
+        ..Effects::default()
+    }
+}
+
+/// Signed distance of the ball's centre from the floor's line, positive on the normal's side.
+fn height_above(floor: &Floor, ball: &Ball) -> f64 {
+    let (dx, dy) = (floor.to[0] - floor.from[0], floor.to[1] - floor.from[1]);
+    let length = dx.hypot(dy);
+    ((ball.x - floor.from[0]) * dy - (ball.y - floor.from[1]) * dx) / length
+}
+
+#[test]
+fn a_ball_ten_diameters_per_frame_does_not_tunnel_through_a_floor() {
+    // Horizontal floor at y = 200 (normal points up, towards smaller y... from → to leftwards).
+    let floor = Floor {
+        from: [300.0, 200.0],
+        to: [0.0, 200.0],
+        damping: 1.0,
+    };
+    let mut ball = Ball::new(150.0, 100.0, 0.0, 100.0, 5.0, 0); // 100 px/frame = 10 diameters
+    let effects = floor_only(floor, None);
+    for frame in 0..20 {
+        ball.step(&effects, &Motion::default());
+        assert!(
+            ball.y <= 200.0 - 5.0 + 1e-9,
+            "frame {frame}: the ball must stay above the floor: expected y <= 195, got {}",
+            ball.y
+        );
+    }
+    assert!(
+        ball.vy < 0.0,
+        "after the hit the ball moves up: vy = {}",
+        ball.vy
+    );
+}
+
+#[test]
+fn a_bounce_flips_the_normal_speed_with_damping_and_keeps_the_tangential_speed() {
+    // A 45° floor; the ball falls straight down onto it.
+    let floor = Floor {
+        from: [200.0, 0.0],
+        to: [0.0, 200.0],
+        damping: 0.5,
+    };
+    let mut ball = Ball::new(100.0, 80.0, 0.0, 20.0, 5.0, 0);
+    ball.step(&floor_only(floor, None), &Motion::default());
+    // Normal n = (-1, -1)/√2 (up-left), tangent t = (-1, 1)/√2.
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    let normal_speed = -(ball.vx + ball.vy) * s;
+    let tangential_speed = (-ball.vx + ball.vy) * s;
+    let expected_normal = 0.5 * 20.0 * s;
+    let expected_tangential = 20.0 * s;
+    assert!(
+        (normal_speed - expected_normal).abs() < 1e-12,
+        "normal speed: expected {expected_normal}, got {normal_speed}"
+    );
+    assert!(
+        (tangential_speed - expected_tangential).abs() < 1e-12,
+        "tangential speed: expected {expected_tangential}, got {tangential_speed}"
+    );
+    let distance = height_above(&floor, &ball).abs();
+    assert!(
+        (distance - 5.0).abs() < 1e-9,
+        "clamped to touch the floor: expected distance 5, got {distance}"
+    );
+}
+
+#[test]
+fn a_ball_resting_on_a_slope_does_not_sink_into_it() {
+    let floor = Floor {
+        from: [320.0, 240.0],
+        to: [0.0, 140.0],
+        damping: 0.88,
+    };
+    let mut ball = Ball::new(160.0, 178.0, 0.0, 0.0, 12.0, 0);
+    let effects = floor_only(floor, Some([0.0, 0.5]));
+    let mut lowest = f64::INFINITY;
+    for _ in 0..200 {
+        ball.step(&effects, &Motion::default());
+        if (0.0..320.0).contains(&ball.x) {
+            lowest = lowest.min(height_above(&floor, &ball).abs());
+        }
+    }
+    assert!(
+        lowest >= 12.0 - 1e-9,
+        "the ball's centre must stay a radius (12) from the slope; closest was {lowest}"
+    );
+}
+
+#[test]
+fn a_ball_hitting_an_end_point_bounces_off_it_as_off_a_point() {
+    // The segment ends at (100, 100); the ball comes straight down onto that point.
+    let floor = Floor {
+        from: [0.0, 100.0],
+        to: [100.0, 100.0],
+        damping: 1.0,
+    };
+    let mut ball = Ball::new(104.0, 80.0, 0.0, 14.0, 10.0, 0);
+    ball.step(&floor_only(floor, None), &Motion::default());
+    let distance = (ball.x - 100.0).hypot(ball.y - 100.0);
+    assert!(
+        (distance - 10.0).abs() < 1e-9,
+        "pushed out to touch the end point: expected 10, got {distance}"
+    );
+    assert!(
+        ball.vy < 0.0 && ball.vx > 0.0,
+        "deflected up and away from the point: v = ({}, {})",
+        ball.vx,
+        ball.vy
+    );
+    let speed = ball.vx.hypot(ball.vy);
+    assert!(
+        (speed - 14.0).abs() < 1e-9,
+        "elastic: speed kept, expected 14, got {speed}"
+    );
+}

@@ -1,0 +1,36 @@
+//! The preset GIFs shown in the README (`scenes/NAME.gif`) must be what the program renders
+//! now, byte for byte, so they cannot go stale. Regenerate on purpose:
+//! `UPDATE_GOLDEN=1 cargo test --test presets`.
+
+use std::path::Path;
+
+use bouncing_ball::scene_file::{self, PRESETS};
+use bouncing_ball::{run, Outputs};
+
+#[test]
+fn every_preset_gif_in_scenes_matches_a_fresh_render_byte_for_byte() {
+    let dir = tempfile::tempdir().unwrap();
+    let update = std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1");
+    let mut stale = Vec::new();
+    for (name, _) in PRESETS {
+        let scene = scene_file::preset(name, 1).unwrap();
+        let outputs = Outputs {
+            gif: dir.path().join(format!("{name}.gif")),
+            png: dir.path().join(format!("{name}.png")),
+            trace: None,
+        };
+        run(&scene, &outputs).unwrap_or_else(|e| panic!("preset {name}: {e}"));
+        let fresh = std::fs::read(&outputs.gif).unwrap();
+        let committed_path =
+            Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.gif"));
+        if update {
+            std::fs::write(&committed_path, &fresh).unwrap();
+        } else if std::fs::read(&committed_path).ok().as_deref() != Some(&fresh[..]) {
+            stale.push(name);
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "these preset GIFs differ from a fresh render: {stale:?}. If the change is intended, regenerate: UPDATE_GOLDEN=1 cargo test --test presets"
+    );
+}

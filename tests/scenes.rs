@@ -1,0 +1,293 @@
+//! Scenes: presets, scene files and their errors, flag overrides, seeds, the colour budget,
+//! and proof that an effect a scene does not call for never runs.
+
+mod common;
+
+use bouncing_ball::overrides::Overrides;
+use bouncing_ball::palette::{shade, MAX_COLOURS};
+use bouncing_ball::render::Renderer;
+use bouncing_ball::scene_file::{self, SceneFileError, PRESETS};
+use bouncing_ball::simulation::Simulation;
+use bouncing_ball::work::{self, Work};
+use bouncing_ball::{BallSpec, Scene};
+use common::lesson_scene;
+
+#[test]
+fn every_preset_parses_and_is_valid() {
+    for (name, _) in PRESETS {
+        let scene = scene_file::preset(name, 1).unwrap_or_else(|e| panic!("preset {name}: {e}"));
+        assert!(!scene.balls.is_empty(), "preset {name} has balls");
+    }
+}
+
+#[test]
+fn the_lesson_preset_is_the_lesson_scene() {
+    let preset = scene_file::preset("lesson", 1).unwrap();
+    assert_eq!(
+        preset,
+        lesson_scene(),
+        "scenes/lesson.toml must describe exactly the lesson's scene"
+    );
+}
+
+#[test]
+fn the_many_and_billiards_presets_have_fifty_balls() {
+    for name in ["many", "billiards"] {
+        let scene = scene_file::preset(name, 1).unwrap();
+        assert_eq!(scene.balls.len(), 50, "preset {name}");
+    }
+    assert!(
+        scene_file::preset("billiards", 1)
+            .unwrap()
+            .ball_collisions
+            .is_some(),
+        "billiards collides"
+    );
+    assert!(
+        scene_file::preset("many", 1)
+            .unwrap()
+            .ball_collisions
+            .is_none(),
+        "many does not collide"
+    );
+}
+
+#[test]
+fn the_same_seed_spawns_the_same_balls_and_another_seed_other_balls() {
+    let a = scene_file::preset("many", 7).unwrap();
+    let b = scene_file::preset("many", 7).unwrap();
+    let c = scene_file::preset("many", 8).unwrap();
+    assert_eq!(a, b, "same seed, same scene");
+    assert_ne!(a.balls, c.balls, "another seed, other balls");
+}
+
+#[test]
+fn overrides_replace_only_the_values_given() {
+    let mut scene = scene_file::preset("moon", 1).unwrap();
+    let moon = scene.clone();
+    Overrides {
+        damping: Some(1.0),
+        vx: Some(-1.5),
+        ..Overrides::default()
+    }
+    .apply(&mut scene);
+    assert_eq!(scene.walls, Some(1.0), "--damping sets the walls' damping");
+    assert_eq!(scene.balls[0].vx, -1.5, "--vx sets every ball's vx");
+    assert_eq!(
+        scene.gravity, moon.gravity,
+        "gravity not given, so the moon's is kept"
+    );
+    assert_eq!(
+        scene.balls[0].radius, moon.balls[0].radius,
+        "radius not given, so kept"
+    );
+}
+
+#[test]
+fn a_zero_gravity_or_drag_override_removes_the_effect() {
+    let mut scene = lesson_scene();
+    Overrides {
+        gravity: Some(0.0),
+        drag: Some(0.0),
+        ..Overrides::default()
+    }
+    .apply(&mut scene);
+    assert_eq!((scene.gravity, scene.drag), (None, None));
+}
+
+/// Steps `scene` for `frames` and returns the counted work.
+fn work_done(scene: &Scene, frames: u32) -> [u64; 5] {
+    let mut simulation = Simulation::new(scene);
+    work::reset();
+    for _ in 0..frames {
+        simulation.step();
+    }
+    [
+        Work::Gravity,
+        Work::Drag,
+        Work::Walls,
+        Work::Floor,
+        Work::BallCollisions,
+    ]
+    .map(work::count)
+}
+
+#[test]
+fn an_effect_the_scene_does_not_call_for_never_runs() {
+    // [gravity, drag, walls, floor checks, ball-ball passes] over 100 frames.
+    let cases = [
+        ("lesson", [100, 0, 100, 0, 0]),
+        ("no-gravity", [0, 0, 100, 0, 0]),
+        ("drag", [100, 100, 100, 0, 0]),
+        ("slope", [100, 0, 100, 100, 0]),
+        ("many", [5000, 0, 5000, 0, 0]),
+    ];
+    for (name, expected) in cases {
+        let scene = scene_file::preset(name, 1).unwrap();
+        let done = work_done(&scene, 100);
+        assert_eq!(
+            done, expected,
+            "preset {name}: work done [gravity, drag, walls, floor, ball-ball]"
+        );
+    }
+}
+
+#[test]
+fn without_walls_no_wall_check_runs() {
+    let scene = Scene {
+        walls: None,
+        ..lesson_scene()
+    };
+    assert_eq!(work_done(&scene, 50)[2], 0, "wall checks without walls");
+}
+
+fn parse_error(text: &str) -> String {
+    match scene_file::parse("bad.toml", text, 1) {
+        Ok(_) => panic!("expected an error for:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+const GOOD_HEAD: &str = "width = 320\nheight = 240\n";
+
+#[test]
+fn an_unknown_key_is_named_with_the_file_and_line() {
+    let err = parse_error(&format!("{GOOD_HEAD}gravty = [0.0, 0.5]\n"));
+    assert!(
+        err.starts_with("bad.toml: line 3: key `gravty`: unknown field"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "one line: {err}");
+}
+
+#[test]
+fn a_wrong_type_is_named_with_the_key_and_what_was_expected() {
+    let err = parse_error(&format!(
+        "{GOOD_HEAD}[[balls]]\nx = 40.0\ny = \"forty\"\nradius = 12.0\n"
+    ));
+    assert!(
+        err.contains("key `balls[0].y`") && err.contains("expected f64"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_missing_value_is_named() {
+    let err = parse_error("width = 320\n");
+    assert!(err.contains("missing field `height`"), "{err}");
+    let err = parse_error(&format!("{GOOD_HEAD}[[balls]]\nx = 40.0\ny = 40.0\n"));
+    assert!(
+        err.contains("balls[0]") && err.contains("missing field `radius`"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_out_of_range_number_is_named_with_its_allowed_range() {
+    for (extra, key, allowed) in [
+        ("walls = { damping = 1.5 }\n", "damping = 1.5", "from 0 to 1"),
+        ("drag = -0.1\n", "drag = -0.1", "from 0 to 1"),
+        ("ball_collisions = { restitution = 2.0 }\n", "restitution = 2", "from 0 to 1"),
+        ("substeps = 0\n", "substeps = 0", "1 to 10000"),
+        ("[[floors]]\nfrom = [0.0, 1.0]\nto = [0.0, 1.0]\ndamping = 1.0\n", "floors[0].to", "must differ"),
+        ("[[balls]]\nx = 40.0\ny = 40.0\nradius = 200.0\n", "balls[0].radius = 200", "2·radius < width"),
+        ("[spawn]\ncount = 5000000\nradius = 1.0\nmax_speed = 1.0\ncolours = []\ntrail_colours = []\n", "spawn.count", "at most"),
+    ] {
+        let err = parse_error(&format!("{GOOD_HEAD}{extra}"));
+        assert!(err.starts_with("bad.toml: ") && err.contains(key) && err.contains(allowed), "{extra:?}: {err}");
+    }
+}
+
+#[test]
+fn an_unknown_preset_lists_the_presets() {
+    let err = scene_file::preset("mars", 1).unwrap_err();
+    assert!(matches!(err, SceneFileError::UnknownPreset { .. }));
+    assert!(err.to_string().contains("moon"), "{err}");
+}
+
+#[test]
+fn the_bad_scene_file_exits_2_with_one_line_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("bad.toml"),
+        format!("{GOOD_HEAD}walls = {{ damping = 7.0 }}\n"),
+    )
+    .unwrap();
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
+        .args(["--scene", "bad.toml"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("bad.toml") && err.contains("damping = 7") && err.contains("from 0 to 1"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        1,
+        "only the scene file remains"
+    );
+}
+
+fn ball(trail_colour: [u8; 3], trail: usize) -> BallSpec {
+    BallSpec {
+        trail_colour,
+        trail,
+        ..lesson_scene().balls[0].clone()
+    }
+}
+
+#[test]
+fn trails_beyond_the_gif_colour_budget_fade_in_fewer_evenly_spaced_shades() {
+    // Two 300-point trails in two colours need thousands of exact shades.
+    let scene = Scene {
+        balls: vec![ball([60, 140, 255], 300), ball([255, 90, 90], 300)],
+        ..lesson_scene()
+    };
+    let renderer = Renderer::new(&scene).unwrap();
+    let colours = renderer.palette().colours();
+    assert!(
+        colours.len() <= MAX_COLOURS,
+        "palette holds {} colours",
+        colours.len()
+    );
+    // The rule: (256 − 2 solid colours) / 2 trail colours = 127 levels, fade k/127 for k = 1..=127.
+    let levels = 127;
+    let allowed: Vec<[u8; 3]> = [[0, 0, 0], [255, 200, 60]]
+        .into_iter()
+        .chain(
+            [[60, 140, 255], [255, 90, 90]]
+                .iter()
+                .flat_map(|&c| (1..=levels).map(move |k| shade(c, k as f64 / levels as f64))),
+        )
+        .collect();
+    for colour in colours {
+        assert!(
+            allowed.contains(colour),
+            "{colour:?} is not background, ball, or a trail shade at k/{levels}"
+        );
+    }
+    assert!(
+        colours.len() > 200,
+        "the budget is used, not collapsed: {} colours",
+        colours.len()
+    );
+}
+
+#[test]
+fn the_lesson_trail_fits_with_every_exact_shade() {
+    let renderer = Renderer::new(&lesson_scene()).unwrap();
+    let n = renderer.palette().colours().len();
+    assert!(
+        n < MAX_COLOURS,
+        "the lesson's palette fits exactly: {n} colours"
+    );
+    // Dot 0 of 20 shines at 1/20: int(60/20, 140/20, 255/20) = (3, 7, 12).
+    assert!(
+        renderer.palette().colours().contains(&[3, 7, 12]),
+        "the faintest exact lesson shade is present"
+    );
+}
