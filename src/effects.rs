@@ -18,12 +18,21 @@ pub struct Effects {
 }
 
 impl Effects {
-    /// Clamp-then-reflect against every floor, then the box: the lesson's collision response.
+    /// The lesson's collision response: clamp-then-reflect against the box, then against
+    /// every floor (swept from `from`), then the box again in case a floor pushed the ball
+    /// out. Box first, so a fast ball cannot slip round a floor's end through the wall.
     pub fn clamp_and_reflect(&self, ball: &mut crate::ball::Ball, from: [f64; 2]) {
-        for floor in &self.floors {
-            tally(Work::Floor);
-            floor.bounce(ball, from);
+        self.bounce_off_walls(ball);
+        if !self.floors.is_empty() {
+            for floor in &self.floors {
+                tally(Work::Floor);
+                floor.bounce(ball, from);
+            }
+            self.bounce_off_walls(ball);
         }
+    }
+
+    fn bounce_off_walls(&self, ball: &mut crate::ball::Ball) {
         if let Some(walls) = &self.walls {
             tally(Work::Walls);
             walls.bounce(ball);

@@ -233,3 +233,41 @@ fn case_9_drag_without_gravity_decays_speed_geometrically() {
         );
     }
 }
+
+#[test]
+fn case_8_a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink() {
+    use bouncing_ball::floor::Floor;
+    // A 60° slope from the top wall to the bottom wall, so no ball can go around its ends;
+    // balls thrown at it at up to 30 diameters per frame.
+    let slope = Floor {
+        from: [330.0, 0.0],
+        to: [100.0, 400.0],
+        damping: 0.88,
+    };
+    let side = |b: &Ball| {
+        let (dx, dy) = (slope.to[0] - slope.from[0], slope.to[1] - slope.from[1]);
+        ((b.x - slope.from[0]) * dy - (b.y - slope.from[1]) * dx) / dx.hypot(dy)
+    };
+    let effects = Effects {
+        floors: vec![slope],
+        ..boxed(400.0, 400.0, 0.88, Some([0.0, 0.5]))
+    };
+    for (vx, vy) in [(300.0, 40.0), (150.0, 150.0), (250.0, -100.0)] {
+        let mut ball = Ball::new(60.0, 150.0, vx, vy, 5.0, 0);
+        let start_side = side(&ball).signum();
+        for frame in 1..=2000 {
+            ball.step(&effects, &Motion::default());
+            let distance = side(&ball) * start_side;
+            // Within the segment's extent the centre keeps at least a radius on its side.
+            assert!(
+                distance > 0.0,
+                "throw ({vx}, {vy}), frame {frame}: crossed the slope, signed distance {distance}"
+            );
+        }
+        assert!(
+            side(&ball).abs() >= 5.0 - 1e-9,
+            "throw ({vx}, {vy}): sunk into the slope: distance {}",
+            side(&ball)
+        );
+    }
+}
