@@ -154,10 +154,10 @@ impl Scene {
             check_share("drag", drag)?;
         }
         if let Some(damping) = self.walls {
-            check_share("damping", damping)?;
+            check_share("walls.damping", damping)?;
         }
         if let Some(restitution) = self.ball_collisions {
-            check_share("restitution", restitution)?;
+            check_share("ball_collisions.restitution", restitution)?;
         }
         for (i, floor) in self.floors.iter().enumerate() {
             let key = |name: &str| format!("floors[{i}].{name}");

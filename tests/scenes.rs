@@ -187,9 +187,9 @@ fn a_missing_value_is_named() {
 #[test]
 fn an_out_of_range_number_is_named_with_its_allowed_range() {
     for (extra, key, allowed) in [
-        ("walls = { damping = 1.5 }\n", "damping = 1.5", "from 0 to 1"),
+        ("walls = { damping = 1.5 }\n", "walls.damping = 1.5", "from 0 to 1"),
         ("drag = -0.1\n", "drag = -0.1", "from 0 to 1"),
-        ("ball_collisions = { restitution = 2.0 }\n", "restitution = 2", "from 0 to 1"),
+        ("ball_collisions = { restitution = 2.0 }\n", "ball_collisions.restitution = 2", "from 0 to 1"),
         ("substeps = 0\n", "substeps = 0", "1 to 10000"),
         ("[[floors]]\nfrom = [0.0, 1.0]\nto = [0.0, 1.0]\ndamping = 1.0\n", "floors[0].to", "must differ"),
         ("[[balls]]\nx = 40.0\ny = 40.0\nradius = 200.0\n", "balls[0].radius = 200", "2·radius < width"),
@@ -224,7 +224,7 @@ fn the_bad_scene_file_exits_2_with_one_line_and_writes_nothing() {
     assert_eq!(output.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
-        err.contains("bad.toml") && err.contains("damping = 7") && err.contains("from 0 to 1"),
+        err.contains("bad.toml") && err.contains("walls.damping = 7") && err.contains("from 0 to 1"),
         "{err}"
     );
     assert_eq!(
