@@ -224,7 +224,9 @@ fn the_bad_scene_file_exits_2_with_one_line_and_writes_nothing() {
     assert_eq!(output.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
-        err.contains("bad.toml") && err.contains("walls.damping = 7") && err.contains("from 0 to 1"),
+        err.contains("bad.toml")
+            && err.contains("walls.damping = 7")
+            && err.contains("from 0 to 1"),
         "{err}"
     );
     assert_eq!(
