@@ -15,6 +15,7 @@ pub mod motion;
 pub mod output;
 pub mod overrides;
 pub mod palette;
+pub mod progress;
 pub mod random;
 pub mod render;
 pub mod run;

@@ -211,6 +211,7 @@ fn main() -> ExitCode {
         gif: args.gif.clone(),
         png: args.png.clone(),
         trace: args.trace.clone(),
+        progress: !args.quiet,
     };
     match run(&scene, &outputs) {
         Ok(summary) => {

@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 use crate::encode::{write_png, GifWriter};
 use crate::output::{AtomicFile, OutputError};
 use crate::palette::TooManyColours;
+use crate::progress::Progress;
 use crate::render::Renderer;
 use crate::scene::{InvalidValue, Scene};
 use crate::simulation::Simulation;
@@ -20,6 +21,8 @@ pub struct Outputs {
     pub png: PathBuf,
     /// The CSV of every ball's state in every frame, when asked for.
     pub trace: Option<PathBuf>,
+    /// Show a progress bar on stderr if the run looks long (never when stderr is not a terminal).
+    pub progress: bool,
 }
 
 /// What a run wrote.
@@ -83,6 +86,7 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
 
     let mut simulation = Simulation::new(scene);
     let mut frame = renderer.new_frame();
+    let mut progress = Progress::new(scene.frames, outputs.progress);
     for n in 0..scene.frames {
         simulation.step();
         if let Some(out) = trace_out.as_mut() {
@@ -90,6 +94,7 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         }
         renderer.draw(simulation.balls(), &mut frame);
         gif.write_frame(&frame).map_err(&gif_error)?;
+        progress.frames_done(n + 1);
     }
     gif.finish()
         .and_then(|mut out| out.flush())
