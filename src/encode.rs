@@ -1,18 +1,68 @@
-//! Image files from indexed frames: the animated GIF, streamed frame by frame, and the
-//! still PNG. Knows frames and palettes, nothing of balls.
+//! Image files from indexed frames: the animated GIF and the still PNG. Knows frames and
+//! palettes, nothing of balls.
+//!
+//! The GIF is written for size and speed without losing a pixel. After the first frame,
+//! each frame is only the rectangle that changed ([`crate::delta`]), laid over the last one
+//! (disposal Keep). Frames wait in a queue of bounded size; a full queue is compressed on
+//! every core at once (rayon) and written in order, so memory stays flat however many
+//! frames a run has, and the queue's buffers serve the whole run.
 
 use std::borrow::Cow;
 use std::io::{self, Write};
+use std::time::{Duration, Instant};
 
 use image::ImageEncoder;
+use rayon::prelude::*;
 
+use crate::delta::{changed_rect, crop, paste, Rect};
+use crate::lzw::Lzw;
 use crate::palette::Palette;
 use crate::render::{to_rgb, IndexedFrame};
+
+/// The most pixels the queue holds (unless a single frame is bigger): what bounds memory.
+pub const QUEUE_PIXELS: usize = 4 << 20;
+/// The most frames the queue holds: plenty to keep every core busy.
+pub const MAX_QUEUED_FRAMES: usize = 32;
+
+/// How many frames of `width` × `height` px wait to be compressed together: at least one,
+/// at most [`MAX_QUEUED_FRAMES`], and no more than [`QUEUE_PIXELS`] unless one frame alone is.
+pub fn queue_frames(width: u32, height: u32) -> usize {
+    let frame_pixels = (width as usize * height as usize).max(1);
+    (QUEUE_PIXELS / frame_pixels).clamp(1, MAX_QUEUED_FRAMES)
+}
 
 /// An animated GIF being written: every frame shows `frame_ms`, and the animation loops forever.
 pub struct GifWriter<W: Write> {
     encoder: gif::Encoder<W>,
+    width: u32,
+    height: u32,
     delay_cs: u16,
+    /// Entries in the colour table, which sets the LZW code size.
+    colours: usize,
+    /// What a viewer shows after the frames written so far (None before the first).
+    shown: Option<IndexedFrame>,
+    queue: Vec<Queued>,
+    queued: usize,
+    timings: EncodeTimings,
+}
+
+/// One frame waiting in the queue: what to write where, and its compressed bytes.
+#[derive(Default)]
+struct Queued {
+    rect: Rect,
+    pixels: Vec<u8>,
+    lzw: Vec<u8>,
+}
+
+/// Where a GIF writer's time went, summed over the frames so far (wall-clock).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct EncodeTimings {
+    /// Finding each frame's changed rectangle and copying it out.
+    pub changes: Duration,
+    /// LZW compression, every core at once.
+    pub lzw: Duration,
+    /// Handing the compressed frames to the output.
+    pub write: Duration,
 }
 
 fn gif_error(e: gif::EncodingError) -> io::Error {
@@ -37,23 +87,102 @@ impl<W: Write> GifWriter<W> {
             .set_repeat(gif::Repeat::Infinite)
             .map_err(gif_error)?;
         let delay_cs = u16::try_from(frame_ms / 10).map_err(io::Error::other)?;
-        Ok(GifWriter { encoder, delay_cs })
+        let queue = (0..queue_frames(width.into(), height.into()))
+            .map(|_| Queued::default())
+            .collect();
+        Ok(GifWriter {
+            encoder,
+            width: width.into(),
+            height: height.into(),
+            delay_cs,
+            colours: palette.colours().len(),
+            shown: None,
+            queue,
+            queued: 0,
+            timings: EncodeTimings::default(),
+        })
     }
 
-    /// Compresses and writes one frame; nothing of it is kept.
+    /// Queues one frame (the canvas's size), writing the queue when it is full.
     pub fn write_frame(&mut self, frame: &IndexedFrame) -> io::Result<()> {
-        let gif_frame = gif::Frame {
-            width: frame.width() as u16,
-            height: frame.height() as u16,
-            delay: self.delay_cs,
-            buffer: Cow::Borrowed(frame.as_raw()),
-            ..gif::Frame::default()
-        };
-        self.encoder.write_frame(&gif_frame).map_err(gif_error)
+        if frame.dimensions() != (self.width, self.height) {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidInput,
+                format!(
+                    "a {}x{} frame does not fit a {}x{} GIF",
+                    frame.width(),
+                    frame.height(),
+                    self.width,
+                    self.height
+                ),
+            ));
+        }
+        let started = Instant::now();
+        let slot = &mut self.queue[self.queued];
+        match &mut self.shown {
+            None => {
+                slot.rect = Rect::whole(frame);
+                self.shown = Some(frame.clone());
+            }
+            Some(shown) => {
+                let changed = changed_rect(shown, frame);
+                // An unchanged frame is still written, as one pixel, so it keeps its time.
+                slot.rect = changed.unwrap_or(Rect::corner());
+                if let Some(changed) = changed {
+                    paste(frame, changed, shown);
+                }
+            }
+        }
+        crop(frame, slot.rect, &mut slot.pixels);
+        self.queued += 1;
+        self.timings.changes += started.elapsed();
+        if self.queued == self.queue.len() {
+            self.flush()?;
+        }
+        Ok(())
     }
 
-    /// Writes the trailer and hands back the output.
-    pub fn finish(self) -> io::Result<W> {
+    /// Compresses every queued frame, all cores at once, and writes them in order.
+    pub fn flush(&mut self) -> io::Result<()> {
+        let queue = &mut self.queue[..self.queued];
+        let started = Instant::now();
+        let colours = self.colours;
+        // One coder per rayon work split, reset between the frames it compresses.
+        queue.par_iter_mut().try_for_each_init(
+            || Lzw::new(colours),
+            |lzw, queued| lzw.compress(&queued.pixels, &mut queued.lzw),
+        )?;
+        let compressed = Instant::now();
+        for queued in queue.iter() {
+            let rect = queued.rect;
+            let frame = gif::Frame {
+                left: rect.left as u16,
+                top: rect.top as u16,
+                width: rect.width as u16,
+                height: rect.height as u16,
+                delay: self.delay_cs,
+                dispose: gif::DisposalMethod::Keep,
+                buffer: Cow::Borrowed(&queued.lzw),
+                ..gif::Frame::default()
+            };
+            self.encoder
+                .write_lzw_pre_encoded_frame(&frame)
+                .map_err(gif_error)?;
+        }
+        self.queued = 0;
+        self.timings.lzw += compressed - started;
+        self.timings.write += compressed.elapsed();
+        Ok(())
+    }
+
+    /// Where the time went so far.
+    pub fn timings(&self) -> EncodeTimings {
+        self.timings
+    }
+
+    /// Writes what is still queued and the trailer, and hands back the output.
+    pub fn finish(mut self) -> io::Result<W> {
+        self.flush()?;
         self.encoder.into_inner().map_err(gif_error)
     }
 }

@@ -2,15 +2,18 @@
 //! ported from a teaching script.
 //!
 //! One concept per module: [`ball`] and [`walls`] are the lesson's physics, [`simulation`]
-//! advances a [`scene`], [`render`] draws a frame into [`palette`] indices, [`encode`] writes
-//! GIF and PNG, [`output`] makes files appear whole, [`trace`] writes the CSV, and [`run`]
-//! ties them together for the command line.
+//! advances a [`scene`], [`render`] draws a frame into [`palette`] indices, [`delta`] finds
+//! what changed since the last frame, [`lzw`] compresses it, [`encode`] writes GIF and PNG,
+//! [`output`] makes files appear whole, [`trace`] writes the CSV, [`progress`] shows how far
+//! a long run is, and [`run`] ties them together for the command line.
 
 pub mod ball;
+pub mod delta;
 pub mod effects;
 pub mod encode;
 pub mod floor;
 pub mod integrator;
+pub mod lzw;
 pub mod motion;
 pub mod output;
 pub mod overrides;

@@ -1,0 +1,98 @@
+//! What changed between two frames: the smallest rectangle holding every changed pixel,
+//! cut out to be laid over the previous frame.
+//!
+//! Knows frames of palette indices, nothing of balls and nothing of GIF.
+
+use std::ops::Range;
+
+use crate::render::IndexedFrame;
+
+/// A rectangle of a frame, px from the top-left corner.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Rect {
+    pub left: u32,
+    pub top: u32,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl Rect {
+    /// The whole of `frame`.
+    pub fn whole(frame: &IndexedFrame) -> Rect {
+        Rect {
+            left: 0,
+            top: 0,
+            width: frame.width(),
+            height: frame.height(),
+        }
+    }
+
+    /// The top-left pixel only: what a frame identical to the last one still writes, so
+    /// that it still counts as a frame and keeps its time on screen.
+    pub fn corner() -> Rect {
+        Rect {
+            left: 0,
+            top: 0,
+            width: 1,
+            height: 1,
+        }
+    }
+
+    /// Where each of its rows lies in the bytes of a frame `frame_width` px wide, top first.
+    fn rows(self, frame_width: u32) -> impl Iterator<Item = Range<usize>> {
+        let (width, left) = (frame_width as usize, self.left as usize);
+        let top = self.top as usize;
+        (top..top + self.height as usize).map(move |y| {
+            let start = y * width + left;
+            start..start + self.width as usize
+        })
+    }
+}
+
+/// The smallest rectangle outside which `previous` and `current` are equal; `None` when the
+/// two frames are identical. Both must be the same size.
+pub fn changed_rect(previous: &IndexedFrame, current: &IndexedFrame) -> Option<Rect> {
+    let width = current.width() as usize;
+    let rows = previous
+        .as_raw()
+        .chunks_exact(width)
+        .zip(current.as_raw().chunks_exact(width));
+    let (mut left, mut right) = (width, 0);
+    let (mut top, mut bottom) = (None, 0);
+    for (y, (old, new)) in rows.enumerate() {
+        // Whole rows compare as one memcmp; most rows of a frame did not change.
+        if old == new {
+            continue;
+        }
+        let differs = |(a, b): (&u8, &u8)| a != b;
+        let first = old.iter().zip(new).position(differs).unwrap_or(0);
+        let last = old.iter().zip(new).rposition(differs).unwrap_or(0);
+        left = left.min(first);
+        right = right.max(last + 1);
+        top.get_or_insert(y);
+        bottom = y + 1;
+    }
+    let top = top?;
+    Some(Rect {
+        left: left as u32,
+        top: top as u32,
+        width: (right - left) as u32,
+        height: (bottom - top) as u32,
+    })
+}
+
+/// Copies `rect` of `frame` into `out` (cleared first), row after row.
+pub fn crop(frame: &IndexedFrame, rect: Rect, out: &mut Vec<u8>) {
+    out.clear();
+    for span in rect.rows(frame.width()) {
+        out.extend_from_slice(&frame.as_raw()[span]);
+    }
+}
+
+/// Copies `rect` of `from` onto the same place in `onto` (both the same size).
+pub fn paste(from: &IndexedFrame, rect: Rect, onto: &mut IndexedFrame) {
+    let onto: &mut [u8] = onto;
+    for span in rect.rows(from.width()) {
+        onto[span.clone()].copy_from_slice(&from.as_raw()[span]);
+    }
+}

@@ -1,0 +1,178 @@
+//! The GIF encoder: lossless however it crops and queues frames, exact in frame count and
+//! timing, and bounded in memory by construction.
+
+mod common;
+
+use std::path::Path;
+
+use bouncing_ball::delta::{changed_rect, Rect};
+use bouncing_ball::encode::{queue_frames, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
+use bouncing_ball::render::IndexedFrame;
+use bouncing_ball::{run, BallSpec, Outputs, Scene};
+use common::{decode_gif, lesson_scene, render_frames};
+use image::Luma;
+
+/// Runs `scene` through the library into a temporary folder and returns the GIF's path.
+fn write_gif(scene: &Scene, dir: &Path) -> std::path::PathBuf {
+    let outputs = Outputs {
+        gif: dir.join("scene.gif"),
+        png: dir.join("scene.png"),
+        trace: None,
+        progress: false,
+    };
+    run(scene, &outputs).expect("the scene runs");
+    outputs.gif
+}
+
+/// Decodes `scene`'s GIF and checks every frame against the renderer's, pixel for pixel.
+fn assert_lossless(scene: &Scene) {
+    let dir = tempfile::tempdir().unwrap();
+    let gif = decode_gif(&write_gif(scene, dir.path()));
+    let rendered = render_frames(scene);
+    assert_eq!(gif.frames.len(), rendered.len(), "frame count");
+    let expected_delay = (scene.frame_ms / 10) as u16;
+    assert!(
+        gif.delays_cs.iter().all(|&d| d == expected_delay),
+        "every delay should be {expected_delay} cs"
+    );
+    for (n, (decoded, drawn)) in gif.frames.iter().zip(&rendered).enumerate() {
+        let differing = decoded.pixels().zip(drawn.pixels()).filter(|(a, b)| a != b);
+        assert_eq!(
+            differing.count(),
+            0,
+            "frame {n}: pixels differ between the decoded GIF and the renderer"
+        );
+    }
+}
+
+/// A ball that runs into a dead wall (damping 0) and stops there for good, beside a ball
+/// that never moves: frames that change, then frames identical to the one before.
+fn ball_that_stops() -> Scene {
+    let ball = |x, vx| BallSpec {
+        x,
+        y: 30.0,
+        vx,
+        vy: 0.0,
+        radius: 5.0,
+        colour: [255, 200, 60],
+        trail_colour: [60, 140, 255],
+        trail: 3,
+    };
+    Scene {
+        balls: vec![ball(20.0, 4.0), ball(8.0, 0.0)],
+        walls: Some(0.0),
+        frames: 40,
+        ..Scene::empty(80, 60)
+    }
+}
+
+/// Every image of a GIF as stored (before compositing): its rectangle.
+fn stored_rects(path: &Path) -> Vec<Rect> {
+    let mut decoder = gif::DecodeOptions::new()
+        .read_info(std::fs::File::open(path).unwrap())
+        .unwrap();
+    let mut rects = Vec::new();
+    while let Some(frame) = decoder.read_next_frame().unwrap() {
+        rects.push(Rect {
+            left: frame.left.into(),
+            top: frame.top.into(),
+            width: frame.width.into(),
+            height: frame.height.into(),
+        });
+    }
+    rects
+}
+
+#[test]
+fn every_decoded_frame_of_the_lesson_equals_the_rendered_frame() {
+    // 200 frames: several full queues and a part-filled last one.
+    assert!(queue_frames(320, 240) < 200);
+    assert_lossless(&lesson_scene());
+}
+
+#[test]
+fn every_decoded_frame_equals_the_rendered_frame_when_frames_repeat() {
+    let scene = ball_that_stops();
+    let rendered = render_frames(&scene);
+    let repeats = rendered.windows(2).filter(|w| w[0] == w[1]).count();
+    assert!(
+        repeats > 10,
+        "the scene should repeat frames once the ball stops; it repeats {repeats}"
+    );
+    assert_lossless(&scene);
+}
+
+#[test]
+fn a_repeated_frame_is_stored_as_one_pixel_and_a_changed_one_as_its_changed_rectangle() {
+    let scene = ball_that_stops();
+    let dir = tempfile::tempdir().unwrap();
+    let rects = stored_rects(&write_gif(&scene, dir.path()));
+    let rendered = render_frames(&scene);
+    assert_eq!(rects.len(), rendered.len(), "frame count");
+    let whole = Rect {
+        left: 0,
+        top: 0,
+        width: 80,
+        height: 60,
+    };
+    assert_eq!(rects[0], whole, "the first frame is whole");
+    for n in 1..rendered.len() {
+        if rendered[n] == rendered[n - 1] {
+            assert_eq!(rects[n], Rect::corner(), "frame {n} repeats the one before");
+        } else {
+            assert!(
+                rects[n].width < 80 && rects[n].height < 60,
+                "frame {n} should be only the part that changed: {:?}",
+                rects[n]
+            );
+        }
+    }
+}
+
+#[test]
+fn the_changed_rectangle_is_the_bounding_box_of_the_changed_pixels() {
+    let before = IndexedFrame::new(10, 8);
+    assert_eq!(changed_rect(&before, &before), None, "identical frames");
+    let mut after = before.clone();
+    after.put_pixel(7, 1, Luma([3]));
+    after.put_pixel(2, 5, Luma([4]));
+    let expected = Rect {
+        left: 2,
+        top: 1,
+        width: 6,
+        height: 5,
+    };
+    let actual = changed_rect(&before, &after);
+    assert_eq!(
+        actual,
+        Some(expected),
+        "expected {expected:?}, got {actual:?}"
+    );
+}
+
+#[test]
+fn the_encoder_queue_is_bounded_in_frames_and_pixels_for_any_canvas() {
+    for (width, height) in [(1, 1), (320, 240), (1920, 1080), (8192, 8192)] {
+        let frames = queue_frames(width, height);
+        let frame_pixels = width as usize * height as usize;
+        assert!(
+            (1..=MAX_QUEUED_FRAMES).contains(&frames),
+            "{width}x{height}: {frames} frames queued"
+        );
+        assert!(
+            frames * frame_pixels <= QUEUE_PIXELS.max(frame_pixels),
+            "{width}x{height}: {frames} frames of {frame_pixels} px exceed the budget of {QUEUE_PIXELS} px"
+        );
+    }
+}
+
+#[test]
+fn a_frame_of_the_wrong_size_is_an_error_not_a_panic() {
+    let scene = lesson_scene();
+    let renderer = bouncing_ball::render::Renderer::new(&scene).unwrap();
+    let mut gif =
+        bouncing_ball::encode::GifWriter::new(Vec::new(), 320, 240, renderer.palette(), 30)
+            .unwrap();
+    let error = gif.write_frame(&IndexedFrame::new(32, 24)).unwrap_err();
+    assert_eq!(error.kind(), std::io::ErrorKind::InvalidInput, "{error}");
+}
