@@ -57,6 +57,7 @@ pub fn changed_rect(previous: &IndexedFrame, current: &IndexedFrame) -> Option<R
         .as_raw()
         .chunks_exact(width)
         .zip(current.as_raw().chunks_exact(width));
+    // Columns left..right and rows top..bottom hold every change seen so far.
     let (mut left, mut right) = (width, 0);
     let (mut top, mut bottom) = (None, 0);
     for (y, (old, new)) in rows.enumerate() {
@@ -64,13 +65,16 @@ pub fn changed_rect(previous: &IndexedFrame, current: &IndexedFrame) -> Option<R
         if old == new {
             continue;
         }
-        let differs = |(a, b): (&u8, &u8)| a != b;
-        let first = old.iter().zip(new).position(differs).unwrap_or(0);
-        let last = old.iter().zip(new).rposition(differs).unwrap_or(0);
-        left = left.min(first);
-        right = right.max(last + 1);
         top.get_or_insert(y);
         bottom = y + 1;
+        // Only a change outside left..right can widen the rectangle, so only look there.
+        if let Some(x) = first_difference(&old[..left], &new[..left]) {
+            left = x;
+        }
+        let outside = right.max(left);
+        if let Some(x) = last_difference(&old[outside..], &new[outside..]) {
+            right = outside + x + 1;
+        }
     }
     let top = top?;
     Some(Rect {
@@ -79,6 +83,22 @@ pub fn changed_rect(previous: &IndexedFrame, current: &IndexedFrame) -> Option<R
         width: (right - left) as u32,
         height: (bottom - top) as u32,
     })
+}
+
+/// Where `a` and `b` first differ. One memcmp answers the common case, that they do not.
+fn first_difference(a: &[u8], b: &[u8]) -> Option<usize> {
+    if a == b {
+        return None;
+    }
+    a.iter().zip(b).position(|(x, y)| x != y)
+}
+
+/// Where `a` and `b` last differ.
+fn last_difference(a: &[u8], b: &[u8]) -> Option<usize> {
+    if a == b {
+        return None;
+    }
+    a.iter().zip(b).rposition(|(x, y)| x != y)
 }
 
 /// Copies `rect` of `frame` into `out` (cleared first), row after row.
