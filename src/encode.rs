@@ -15,7 +15,7 @@ use image::ImageEncoder;
 use rayon::prelude::*;
 
 use crate::delta::{changed_rect, crop, paste, Rect};
-use crate::lzw::Lzw;
+use crate::lzw::{min_code_size, Lzw};
 use crate::palette::Palette;
 use crate::render::{to_rgb, IndexedFrame};
 
@@ -37,8 +37,10 @@ pub struct GifWriter<W: Write> {
     width: u32,
     height: u32,
     delay_cs: u16,
-    /// Entries in the colour table, which sets the LZW code size.
-    colours: usize,
+    /// LZW's starting code size, set by the colour table's size.
+    code_size: u8,
+    /// One LZW coder per thread that compresses, each kept for the whole run.
+    coders: Vec<Lzw>,
     /// What a viewer shows after the frames written so far (None before the first).
     shown: Option<IndexedFrame>,
     queue: Vec<Queued>,
@@ -87,15 +89,19 @@ impl<W: Write> GifWriter<W> {
             .set_repeat(gif::Repeat::Infinite)
             .map_err(gif_error)?;
         let delay_cs = u16::try_from(frame_ms / 10).map_err(io::Error::other)?;
-        let queue = (0..queue_frames(width.into(), height.into()))
+        let queue: Vec<Queued> = (0..queue_frames(width.into(), height.into()))
             .map(|_| Queued::default())
+            .collect();
+        let coders = (0..rayon::current_num_threads().min(queue.len()))
+            .map(|_| Lzw::new())
             .collect();
         Ok(GifWriter {
             encoder,
             width: width.into(),
             height: height.into(),
             delay_cs,
-            colours: palette.colours().len(),
+            code_size: min_code_size(palette.colours().len()),
+            coders,
             shown: None,
             queue,
             queued: 0,
@@ -146,12 +152,17 @@ impl<W: Write> GifWriter<W> {
     pub fn flush(&mut self) -> io::Result<()> {
         let queue = &mut self.queue[..self.queued];
         let started = Instant::now();
-        let colours = self.colours;
-        // One coder per rayon work split, reset between the frames it compresses.
-        queue.par_iter_mut().try_for_each_init(
-            || Lzw::new(colours),
-            |lzw, queued| lzw.compress(&queued.pixels, &mut queued.lzw),
-        )?;
+        let code_size = self.code_size;
+        // Each coder takes an equal run of the queue, so each keeps its table hot.
+        let per_coder = queue.len().div_ceil(self.coders.len()).max(1);
+        queue
+            .par_chunks_mut(per_coder)
+            .zip(self.coders.par_iter_mut())
+            .for_each(|(frames, lzw)| {
+                for frame in frames {
+                    lzw.compress(code_size, &frame.pixels, &mut frame.lzw);
+                }
+            });
         let compressed = Instant::now();
         for queued in queue.iter() {
             let rect = queued.rect;

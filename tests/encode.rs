@@ -6,8 +6,12 @@ mod common;
 use std::path::Path;
 
 use bouncing_ball::delta::{changed_rect, Rect};
-use bouncing_ball::encode::{queue_frames, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
+use bouncing_ball::encode::{queue_frames, GifWriter, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
+use bouncing_ball::lzw::Lzw;
+use bouncing_ball::palette::Palette;
+use bouncing_ball::random::Random;
 use bouncing_ball::render::IndexedFrame;
+use bouncing_ball::render::Renderer;
 use bouncing_ball::{run, BallSpec, Outputs, Scene};
 use common::{decode_gif, lesson_scene, render_frames};
 use image::Luma;
@@ -136,11 +140,12 @@ fn the_changed_rectangle_is_the_bounding_box_of_the_changed_pixels() {
     let mut after = before.clone();
     after.put_pixel(7, 1, Luma([3]));
     after.put_pixel(2, 5, Luma([4]));
+    after.put_pixel(9, 6, Luma([5]));
     let expected = Rect {
         left: 2,
         top: 1,
-        width: 6,
-        height: 5,
+        width: 8,
+        height: 6,
     };
     let actual = changed_rect(&before, &after);
     assert_eq!(
@@ -169,10 +174,84 @@ fn the_encoder_queue_is_bounded_in_frames_and_pixels_for_any_canvas() {
 #[test]
 fn a_frame_of_the_wrong_size_is_an_error_not_a_panic() {
     let scene = lesson_scene();
-    let renderer = bouncing_ball::render::Renderer::new(&scene).unwrap();
-    let mut gif =
-        bouncing_ball::encode::GifWriter::new(Vec::new(), 320, 240, renderer.palette(), 30)
-            .unwrap();
+    let renderer = Renderer::new(&scene).unwrap();
+    let mut gif = GifWriter::new(Vec::new(), 320, 240, renderer.palette(), 30).unwrap();
     let error = gif.write_frame(&IndexedFrame::new(32, 24)).unwrap_err();
     assert_eq!(error.kind(), std::io::ErrorKind::InvalidInput, "{error}");
+}
+
+/// A frame of seeded random indices below `colours`, in runs of 1 to 40, so the LZW
+/// dictionary gets both many short strings and long ones.
+fn random_frame(width: u32, height: u32, colours: usize, random: &mut Random) -> IndexedFrame {
+    let mut pixels = Vec::with_capacity((width * height) as usize);
+    while pixels.len() < pixels.capacity() {
+        let index = (random.next_u64() % colours as u64) as u8;
+        let run = 1 + (random.next_u64() % 40) as usize;
+        let room = pixels.capacity() - pixels.len();
+        pixels.extend(std::iter::repeat_n(index, run.min(room)));
+    }
+    IndexedFrame::from_raw(width, height, pixels).unwrap()
+}
+
+#[test]
+fn lzw_data_decodes_to_the_same_indices_for_every_code_size_and_across_dictionary_resets() {
+    let mut random = Random::new(6);
+    // From 2 colours (the smallest code size) to 256; 400x300 px fill the 4096-code
+    // dictionary many times over.
+    for colours in [2, 3, 5, 16, 129, 256] {
+        let mut palette = Palette::new();
+        for i in 0..colours {
+            palette.insert([i as u8, 0, 0]);
+        }
+        let frame = random_frame(400, 300, colours, &mut random);
+        let mut gif = GifWriter::new(Vec::new(), 400, 300, &palette, 30).unwrap();
+        gif.write_frame(&frame).unwrap();
+        let bytes = gif.finish().unwrap();
+
+        let mut options = gif::DecodeOptions::new();
+        options.set_color_output(gif::ColorOutput::Indexed);
+        let mut decoder = options.read_info(&bytes[..]).unwrap();
+        let decoded = decoder.read_next_frame().unwrap().expect("one frame");
+        let first_wrong = decoded
+            .buffer
+            .iter()
+            .zip(frame.as_raw())
+            .position(|(a, b)| a != b);
+        assert_eq!(
+            (decoded.buffer.len(), first_wrong),
+            (frame.as_raw().len(), None),
+            "{colours} colours: decoded length and first wrong index"
+        );
+    }
+}
+
+#[test]
+fn lzw_writes_the_gif_crates_own_bytes_while_the_dictionary_has_room() {
+    // The gif crate's coder picks the code size from the largest index, so pick ours alike.
+    let gif_code_size = |pixels: &[u8]| {
+        let colours = u32::from(pixels.iter().copied().max().unwrap_or(0)) + 1;
+        colours.max(4).next_power_of_two().trailing_zeros() as u8
+    };
+    let mut random = Random::new(6);
+    let mut lzw = Lzw::new();
+    let mut ours = Vec::new();
+    for colours in [2, 3, 4, 7, 16, 200] {
+        for len in 0..300 {
+            let pixels: Vec<u8> = (0..len)
+                .map(|_| (random.next_u64() % colours) as u8)
+                .collect();
+            lzw.compress(gif_code_size(&pixels), &pixels, &mut ours);
+            let mut frame = gif::Frame {
+                width: len as u16,
+                height: 1,
+                buffer: pixels.into(),
+                ..gif::Frame::default()
+            };
+            frame.make_lzw_pre_encoded();
+            assert_eq!(
+                ours, *frame.buffer,
+                "{len} random indices below {colours}: ours, then the gif crate's"
+            );
+        }
+    }
 }
