@@ -7,8 +7,10 @@
 //! ties them together for the command line.
 
 pub mod ball;
+pub mod collisions;
 pub mod effects;
 pub mod encode;
+pub mod grid;
 pub mod output;
 pub mod palette;
 pub mod render;
