@@ -7,9 +7,11 @@
 //! ties them together for the command line.
 
 pub mod ball;
+pub mod collisions;
 pub mod effects;
 pub mod encode;
 pub mod floor;
+pub mod grid;
 pub mod integrator;
 pub mod motion;
 pub mod output;
