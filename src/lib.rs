@@ -8,10 +8,12 @@
 //! a long run is, and [`run`] ties them together for the command line.
 
 pub mod ball;
+pub mod collisions;
 pub mod delta;
 pub mod effects;
 pub mod encode;
 pub mod floor;
+pub mod grid;
 pub mod integrator;
 pub mod lzw;
 pub mod motion;

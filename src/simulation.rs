@@ -1,6 +1,7 @@
 //! A scene in motion: the balls and the effects acting on them, advanced one frame at a time.
 
 use crate::ball::Ball;
+use crate::collisions::Collisions;
 use crate::effects::Effects;
 use crate::motion::Motion;
 use crate::scene::Scene;
@@ -12,6 +13,8 @@ pub struct Simulation {
     balls: Vec<Ball>,
     effects: Effects,
     motion: Motion,
+    /// Present only if the scene calls for ball-ball collisions (it owns the grid).
+    collisions: Option<Collisions>,
 }
 
 impl Simulation {
@@ -36,14 +39,34 @@ impl Simulation {
             balls,
             effects,
             motion: scene.motion,
+            collisions: scene.ball_collisions.map(Collisions::new),
         }
     }
 
-    /// Advances every ball by one frame.
+    /// Advances every ball by one frame. With ball-ball collisions, every ball moves first,
+    /// then the contacts are resolved, then the trails record where the balls ended up.
     pub fn step(&mut self) {
+        let Some(collisions) = &mut self.collisions else {
+            for ball in &mut self.balls {
+                ball.step(&self.effects, &self.motion);
+            }
+            return;
+        };
         for ball in &mut self.balls {
-            ball.step(&self.effects, &self.motion);
+            self.motion.advance(ball, &self.effects);
         }
+        collisions.resolve(&mut self.balls);
+        for ball in &mut self.balls {
+            if let Some(walls) = &self.effects.walls {
+                walls.contain(ball);
+            }
+            ball.record_trail();
+        }
+    }
+
+    /// Whether ball-ball collisions (and so the broad-phase grid) exist in this simulation.
+    pub fn has_ball_collisions(&self) -> bool {
+        self.collisions.is_some()
     }
 
     /// The balls as they are now, in scene order.

@@ -32,4 +32,12 @@ impl Walls {
             ball.vy = -ball.vy * self.damping;
         }
     }
+
+    /// Puts a ball that something other than its own motion pushed out of the box (a
+    /// neighbour, in a ball-ball collision) back inside, without touching its velocity: it
+    /// did not hit the wall, it was shoved.
+    pub fn contain(&self, ball: &mut Ball) {
+        ball.x = ball.x.clamp(ball.radius, self.width - ball.radius);
+        ball.y = ball.y.clamp(ball.radius, self.height - ball.radius);
+    }
 }

@@ -122,6 +122,7 @@ fn an_effect_the_scene_does_not_call_for_never_runs() {
         ("drag", [100, 100, 100, 0, 0]),
         ("slope", [100, 0, 200, 100, 0]), // the box is checked before and after the floor
         ("many", [5000, 0, 5000, 0, 0]),
+        ("billiards", [0, 0, 5000, 0, 100]),
     ];
     for (name, expected) in cases {
         let scene = scene_file::preset(name, 1).unwrap();
@@ -129,6 +130,20 @@ fn an_effect_the_scene_does_not_call_for_never_runs() {
         assert_eq!(
             done, expected,
             "preset {name}: work done [gravity, drag, walls, floor, ball-ball]"
+        );
+    }
+}
+
+#[test]
+fn a_scene_without_ball_collisions_never_builds_the_grid() {
+    // The grid lives inside `Collisions`, which exists only when the scene asks for it.
+    for (name, _) in PRESETS {
+        let scene = scene_file::preset(name, 1).unwrap();
+        let simulation = Simulation::new(&scene);
+        assert_eq!(
+            simulation.has_ball_collisions(),
+            scene.ball_collisions.is_some(),
+            "preset {name}"
         );
     }
 }

@@ -271,3 +271,126 @@ fn case_8_a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_no
         );
     }
 }
+
+mod ball_ball {
+    use bouncing_ball::ball::Ball;
+    use bouncing_ball::random::Random;
+    use bouncing_ball::simulation::Simulation;
+    use bouncing_ball::{BallSpec, Scene};
+
+    fn spec(x: f64, y: f64, vx: f64, vy: f64, radius: f64) -> BallSpec {
+        BallSpec {
+            x,
+            y,
+            vx,
+            vy,
+            radius,
+            colour: [255, 255, 255],
+            trail_colour: [255, 255, 255],
+            trail: 0,
+        }
+    }
+
+    fn kinetic_energy(balls: &[Ball]) -> f64 {
+        balls
+            .iter()
+            .map(|b| 0.5 * b.radius * b.radius * (b.vx * b.vx + b.vy * b.vy))
+            .sum()
+    }
+
+    /// The deepest overlap of any pair, as a share of the smaller radius (brute force).
+    fn deepest_overlap(balls: &[Ball]) -> f64 {
+        let mut deepest = 0.0f64;
+        for (i, a) in balls.iter().enumerate() {
+            for b in &balls[i + 1..] {
+                let overlap = a.radius + b.radius - (a.x - b.x).hypot(a.y - b.y);
+                deepest = deepest.max(overlap / a.radius.min(b.radius));
+            }
+        }
+        deepest
+    }
+
+    #[test]
+    fn case_7_balls_spawned_at_one_centre_separate_and_never_stick() {
+        let balls = (0..20).map(|_| spec(160.0, 120.0, 0.0, 0.0, 6.0)).collect();
+        let scene = Scene {
+            balls,
+            walls: Some(1.0),
+            ball_collisions: Some(0.9),
+            ..Scene::empty(320, 240)
+        };
+        let mut simulation = Simulation::new(&scene);
+        for frame in 1..=500 {
+            simulation.step();
+            let overlap = deepest_overlap(simulation.balls());
+            assert!(overlap.is_finite(), "frame {frame}: overlap must be finite");
+            if frame >= 100 {
+                assert!(overlap < 1e-6, "frame {frame}: separated by frame 100: deepest overlap bound 1e-6 r, got {overlap}");
+            }
+        }
+        let energy = kinetic_energy(simulation.balls());
+        assert_eq!(
+            energy, 0.0,
+            "pushing apart sets nothing moving: kinetic energy expected 0, got {energy}"
+        );
+    }
+
+    /// 1,000 balls covering half the box, restitution 0.9, elastic walls, no gravity.
+    ///
+    /// Bound on overlap: contacts are resolved once per frame, pair by pair, so a ball pushed
+    /// out of one overlap can be pushed into another and keep that depth until the next frame.
+    /// The depth of a new overlap is at most the pair's approach in one frame, 2 × max speed
+    /// (here 2 × 1 px = 2 px = half a radius); we assert half a radius.
+    #[test]
+    fn case_7_a_thousand_balls_packed_at_half_the_area_stay_finite_bounded_and_lose_energy() {
+        let mut random = Random::new(7);
+        let radius = 4.0;
+        // 1,000 × π × 4² ≈ 50,265 px² of balls in a 317 × 317 box ≈ half of it.
+        let side_px = (1000.0 * std::f64::consts::PI * radius * radius / 0.5f64)
+            .sqrt()
+            .ceil();
+        let per_row = 32;
+        let spacing = side_px / per_row as f64;
+        let balls = (0..1000)
+            .map(|i| {
+                let x = ((i % per_row) as f64 + 0.5) * spacing;
+                let y = ((i / per_row) as f64 + 0.5) * spacing;
+                let (vx, vy) = (random.range(-0.7, 0.7), random.range(-0.7, 0.7));
+                spec(x, y, vx, vy, radius)
+            })
+            .collect();
+        let scene = Scene {
+            balls,
+            walls: Some(1.0),
+            ball_collisions: Some(0.9),
+            ..Scene::empty(side_px as u32, side_px as u32)
+        };
+        scene.validate().expect("a valid packed scene");
+        let mut simulation = Simulation::new(&scene);
+        let mut energy = kinetic_energy(simulation.balls());
+        let mut worst = 0.0f64;
+        for frame in 1..=10_000 {
+            simulation.step();
+            let balls = simulation.balls();
+            assert!(
+                balls
+                    .iter()
+                    .all(|b| [b.x, b.y, b.vx, b.vy].iter().all(|v| v.is_finite())),
+                "frame {frame}: NaN or infinity"
+            );
+            let now = kinetic_energy(balls);
+            assert!(
+                now <= energy * (1.0 + 1e-12),
+                "frame {frame}: kinetic energy rose from {energy} to {now}"
+            );
+            energy = now;
+            if frame % 50 == 0 {
+                worst = worst.max(deepest_overlap(balls));
+            }
+        }
+        assert!(
+            worst <= 0.5,
+            "deepest overlap bound 0.5 radius, got {worst}"
+        );
+    }
+}

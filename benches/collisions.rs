@@ -1,0 +1,88 @@
+//! How the cost of a frame with ball-ball collisions grows with the number of balls.
+//!
+//! Each frame is `Simulation::step` on a scene with walls and ball-ball collisions (every
+//! ball moves, meets the walls, then the contacts are resolved), for 1,000, 10,000 and
+//! 100,000 balls at packing fraction 0.3 (the balls cover 30 % of the box). Criterion
+//! reports the time per frame and, as "elements", ball-steps per second; the cost per ball
+//! should stay flat as N grows.
+//!
+//! Run: `cargo bench --bench collisions` (about 20 s).
+
+use std::f64::consts::PI;
+use std::time::Duration;
+
+use bouncing_ball::random::Random;
+use bouncing_ball::simulation::Simulation;
+use bouncing_ball::{BallSpec, Scene};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+
+/// Share of the box the balls cover.
+const PACKING_FRACTION: f64 = 0.3;
+/// Radii are spread over this range, px, so masses differ and the grid sees mixed sizes.
+const RADII: (f64, f64) = (2.0, 4.0);
+/// Starting speeds are up to this much along each axis, px/frame.
+const MAX_SPEED: f64 = 2.0;
+
+/// `count` balls in a square box sized for the packing fraction, elastic walls and
+/// collisions, no gravity (with gravity the balls pile up on the floor within ~100 frames,
+/// and each size would be measured at a different density). Each ball starts near the middle
+/// of its own square of a lattice (jittered), so the scene starts without overlaps.
+fn scene(count: usize) -> Scene {
+    let mut random = Random::new(count as u64);
+    let radii: Vec<f64> = (0..count).map(|_| random.range(RADII.0, RADII.1)).collect();
+    let area: f64 = radii.iter().map(|r| PI * r * r).sum();
+    let side = (area / PACKING_FRACTION).sqrt().ceil();
+    let per_row = (count as f64).sqrt().ceil() as usize;
+    let spacing = side / per_row as f64;
+    assert!(
+        spacing > 2.0 * RADII.1,
+        "the lattice is too tight to start without overlaps"
+    );
+    let balls = radii
+        .iter()
+        .enumerate()
+        .map(|(i, &radius)| {
+            let slack = spacing / 2.0 - radius;
+            BallSpec {
+                x: ((i % per_row) as f64 + 0.5) * spacing + random.range(-slack, slack),
+                y: ((i / per_row) as f64 + 0.5) * spacing + random.range(-slack, slack),
+                vx: random.range(-MAX_SPEED, MAX_SPEED),
+                vy: random.range(-MAX_SPEED, MAX_SPEED),
+                radius,
+                colour: [255, 255, 255],
+                trail_colour: [255, 255, 255],
+                trail: 0,
+            }
+        })
+        .collect();
+    Scene {
+        balls,
+        walls: Some(1.0),
+        ball_collisions: Some(1.0),
+        ..Scene::empty(side as u32, side as u32)
+    }
+}
+
+fn collisions(c: &mut Criterion) {
+    let mut group = c.benchmark_group("frame_with_collisions");
+    for count in [1_000, 10_000, 100_000] {
+        group.throughput(Throughput::Elements(count as u64));
+        group.bench_function(BenchmarkId::from_parameter(count), |bencher| {
+            let scene = scene(count);
+            scene.validate().expect("a valid benchmark scene");
+            let mut simulation = Simulation::new(&scene);
+            bencher.iter(|| simulation.step());
+        });
+    }
+    group.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
+    targets = collisions
+}
+criterion_main!(benches);

@@ -1,0 +1,165 @@
+//! The broad phase of ball-ball collisions: a uniform grid that finds every overlapping pair
+//! of balls without testing every pair against every other.
+//!
+//! Each frame the balls are sorted by the cell their centre is in (a counting sort into
+//! buffers kept from frame to frame), then each ball is tested only against the balls in its
+//! own cell and the neighbouring ones. A cell is at least as wide as the largest ball, so two
+//! balls that overlap are always in the same or neighbouring cells. At a fixed density a cell
+//! holds a bounded number of balls, so a frame costs O(N) instead of O(N²).
+
+use std::ops::Range;
+
+use crate::ball::Ball;
+
+/// The grid never has more than about this many cells per ball: when balls are spread thin
+/// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).
+const MAX_CELLS_PER_BALL: f64 = 4.0;
+
+/// A ball as the grid sees it: where it is, how big, and its place in the caller's slice.
+/// Copied out of the balls so the pair search reads one compact array in cell order.
+#[derive(Clone, Copy, Debug, Default)]
+struct Entry {
+    x: f64,
+    y: f64,
+    radius: f64,
+    index: usize,
+}
+
+/// A uniform grid over the balls, rebuilt every frame into the same buffers.
+#[derive(Clone, Debug, Default)]
+pub struct Grid {
+    /// The balls sorted by cell (row by row), in the caller's order within a cell.
+    entries: Vec<Entry>,
+    /// The balls of cell `c` are `entries[cell_start[c]..cell_start[c + 1]]`.
+    cell_start: Vec<usize>,
+    /// Each ball's cell, in the caller's order: the counting sort's scratch space.
+    cell_of: Vec<usize>,
+    columns: usize,
+    rows: usize,
+}
+
+impl Grid {
+    /// An empty grid; it allocates on the first `rebuild` and reuses its buffers afterwards.
+    pub fn new() -> Grid {
+        Grid::default()
+    }
+
+    /// Sorts `balls` into cells. The grid covers the balls' bounding box, so it needs no
+    /// canvas size and works for balls anywhere; positions that are not finite all land in
+    /// the first cell rather than panic.
+    pub fn rebuild(&mut self, balls: &[Ball]) {
+        let Some(first) = balls.first() else {
+            self.entries.clear();
+            self.cell_start.clear();
+            self.columns = 0;
+            self.rows = 0;
+            return;
+        };
+        let (mut left, mut top, mut right, mut bottom) = (first.x, first.y, first.x, first.y);
+        let mut largest_radius = 0.0_f64;
+        for ball in balls {
+            left = left.min(ball.x);
+            top = top.min(ball.y);
+            right = right.max(ball.x);
+            bottom = bottom.max(ball.y);
+            largest_radius = largest_radius.max(ball.radius);
+        }
+        let (width, height) = (right - left, bottom - top);
+
+        // At least one diameter, so overlapping balls are at most one cell apart; wider when
+        // the balls are spread thin, so there are never more than a few cells per ball.
+        let max_cells = MAX_CELLS_PER_BALL * balls.len() as f64;
+        let cell = (2.0 * largest_radius)
+            .max((width * height / max_cells).sqrt())
+            .max(width.max(height) / max_cells)
+            .max(f64::MIN_POSITIVE);
+        // `as usize` saturates and maps NaN to 0, so no position can make an index out of range.
+        self.columns = (width / cell) as usize + 1;
+        self.rows = (height / cell) as usize + 1;
+        let last_column = self.columns - 1;
+        let last_row = self.rows - 1;
+
+        self.cell_of.clear();
+        self.cell_of.extend(balls.iter().map(|ball| {
+            let column = (((ball.x - left) / cell) as usize).min(last_column);
+            let row = (((ball.y - top) / cell) as usize).min(last_row);
+            row * self.columns + column
+        }));
+
+        // Counting sort. First count the balls in each cell, then turn the counts into a
+        // running total, so `cell_start[c]` holds where cell `c` ends.
+        self.cell_start.clear();
+        self.cell_start.resize(self.columns * self.rows + 1, 0);
+        for &cell in &self.cell_of {
+            self.cell_start[cell] += 1;
+        }
+        let mut total = 0;
+        for end in &mut self.cell_start {
+            total += *end;
+            *end = total;
+        }
+        // Then place the balls last to first, each just before its cell's end: within a cell
+        // they keep the caller's order, and `cell_start[c]` ends up where cell `c` starts.
+        self.entries.clear();
+        self.entries.resize(balls.len(), Entry::default());
+        for (index, ball) in balls.iter().enumerate().rev() {
+            let slot = &mut self.cell_start[self.cell_of[index]];
+            *slot -= 1;
+            self.entries[*slot] = Entry {
+                x: ball.x,
+                y: ball.y,
+                radius: ball.radius,
+                index,
+            };
+        }
+    }
+
+    /// Replaces the contents of `pairs` with every pair of balls that overlap (centres closer
+    /// than the sum of the radii; touching is not overlapping), as of the last `rebuild`.
+    /// Each pair appears once, as `(i, j)` with `i < j`, in an order that depends only on the
+    /// balls: cell by cell, row by row.
+    pub fn overlapping_pairs(&self, pairs: &mut Vec<(usize, usize)>) {
+        pairs.clear();
+        for row in 0..self.rows {
+            for column in 0..self.columns {
+                let here = self.cells(row, column, column);
+                if here.is_empty() {
+                    continue;
+                }
+                // Each pair of cells is searched once, from the upper or left one: this cell
+                // with the one to its right, and with the three below. Cells next to each other
+                // in a row are next to each other in `entries`, so each is one range.
+                let right = self.cells(row, column, (column + 1).min(self.columns - 1));
+                let below = if row + 1 < self.rows {
+                    let first = column.saturating_sub(1);
+                    self.cells(row + 1, first, (column + 1).min(self.columns - 1))
+                } else {
+                    0..0
+                };
+                for a in here {
+                    // Later balls of this cell and the cell to the right.
+                    self.push_overlaps(a, a + 1..right.end, pairs);
+                    self.push_overlaps(a, below.clone(), pairs);
+                }
+            }
+        }
+    }
+
+    /// The entries of the cells from `first` to `last` column (inclusive) of `row`.
+    fn cells(&self, row: usize, first: usize, last: usize) -> Range<usize> {
+        let start = row * self.columns;
+        self.cell_start[start + first]..self.cell_start[start + last + 1]
+    }
+
+    /// Pushes the pairs that entry `a` makes with the overlapping entries in `others`.
+    fn push_overlaps(&self, a: usize, others: Range<usize>, pairs: &mut Vec<(usize, usize)>) {
+        let a = self.entries[a];
+        for b in &self.entries[others] {
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let reach = a.radius + b.radius;
+            if dx * dx + dy * dy < reach * reach {
+                pairs.push((a.index.min(b.index), a.index.max(b.index)));
+            }
+        }
+    }
+}
