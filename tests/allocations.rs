@@ -1,0 +1,61 @@
+//! Drawing and encoding reuse their buffers: once warmed up, more frames allocate nothing.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use bouncing_ball::encode::{queue_frames, GifWriter};
+use bouncing_ball::render::Renderer;
+use bouncing_ball::scene_file;
+use bouncing_ball::simulation::Simulation;
+
+/// The system allocator, counting every allocation.
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+fn allocations() -> usize {
+    ALLOCATIONS.load(Ordering::Relaxed)
+}
+
+#[test]
+fn drawing_and_encoding_frames_allocate_nothing_once_warmed_up() {
+    let scene = scene_file::preset("elastic", 1).unwrap();
+    let renderer = Renderer::new(&scene).unwrap();
+    let mut simulation = Simulation::new(&scene);
+    let mut frame = renderer.new_frame();
+    let mut gif = GifWriter::new(std::io::sink(), 320, 240, renderer.palette(), 30).unwrap();
+    // Warm up for 10 queues' worth of frames, then count over the next 30 (960 frames).
+    let (warm_up, counted) = (10 * queue_frames(320, 240), 30 * queue_frames(320, 240));
+    let mut during = 0;
+    for n in 0..warm_up + counted {
+        simulation.step();
+        let before = allocations();
+        renderer.draw(simulation.balls(), &mut frame);
+        gif.write_frame(&frame).unwrap();
+        if n >= warm_up {
+            during += allocations() - before;
+        }
+    }
+    // Buffers reach their largest size early; the rare allocation after that is rayon's.
+    assert!(
+        during < 30,
+        "{during} allocations over {counted} frames: something allocates per frame or per queue"
+    );
+}
