@@ -19,45 +19,43 @@ pub fn looks_long(elapsed: Duration, done: u32, total: u32) -> bool {
     elapsed.mul_f64(f64::from(total) / f64::from(done)) > WORTH_A_BAR
 }
 
-/// A run's progress over its frames; the bar appears once the run looks long, and is
-/// cleared when this is dropped, so the summary line prints on a clean terminal.
+/// A run's progress over its frames: the bar counts from the first frame, so its estimate
+/// of the time left is sound, but it is drawn only once the run looks long; it is cleared
+/// when this is dropped, so the summary line prints on a clean terminal.
 pub struct Progress {
     total: u32,
     started: Instant,
-    /// False when asked not to show one (`--quiet`) or nobody would see it.
-    may_show: bool,
+    /// None when asked not to show one (`--quiet`) or nobody would see it.
     bar: Option<ProgressBar>,
+    drawn: bool,
 }
 
 impl Progress {
     /// Progress over `total` frames; `wanted` false means never show a bar.
     pub fn new(total: u32, wanted: bool) -> Progress {
+        let visible = wanted && std::io::stderr().is_terminal();
+        let style = ProgressStyle::with_template("{wide_bar} {pos}/{len} frames, {eta} left")
+            .unwrap_or_else(|_| ProgressStyle::default_bar());
+        let bar = visible.then(|| {
+            ProgressBar::with_draw_target(Some(total.into()), ProgressDrawTarget::hidden())
+                .with_style(style)
+        });
         Progress {
             total,
             started: Instant::now(),
-            may_show: wanted && std::io::stderr().is_terminal(),
-            bar: None,
+            bar,
+            drawn: false,
         }
     }
 
     /// Notes that `done` frames are finished.
     pub fn frames_done(&mut self, done: u32) {
-        match &self.bar {
-            Some(bar) => bar.set_position(done.into()),
-            None if self.may_show && looks_long(self.started.elapsed(), done, self.total) => {
-                self.bar = Some(self.show(done));
-            }
-            None => {}
+        let Some(bar) = &self.bar else { return };
+        bar.set_position(done.into());
+        if !self.drawn && looks_long(self.started.elapsed(), done, self.total) {
+            bar.set_draw_target(ProgressDrawTarget::stderr());
+            self.drawn = true;
         }
-    }
-
-    fn show(&self, done: u32) -> ProgressBar {
-        let style = ProgressStyle::with_template("{wide_bar} {pos}/{len} frames, {eta} left")
-            .unwrap_or_else(|_| ProgressStyle::default_bar());
-        ProgressBar::with_draw_target(Some(self.total.into()), ProgressDrawTarget::stderr())
-            .with_style(style)
-            .with_elapsed(self.started.elapsed())
-            .with_position(done.into())
     }
 }
 
