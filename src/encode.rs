@@ -83,6 +83,12 @@ impl<W: Write> GifWriter<W> {
         palette: &Palette,
         frame_ms: u32,
     ) -> io::Result<Self> {
+        if width == 0 || height == 0 {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidInput,
+                "a GIF needs at least one pixel",
+            ));
+        }
         let table: Vec<u8> = palette.colours().iter().flatten().copied().collect();
         let mut encoder = gif::Encoder::new(out, width, height, &table).map_err(gif_error)?;
         encoder

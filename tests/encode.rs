@@ -172,12 +172,14 @@ fn the_encoder_queue_is_bounded_in_frames_and_pixels_for_any_canvas() {
 }
 
 #[test]
-fn a_frame_of_the_wrong_size_is_an_error_not_a_panic() {
+fn a_frame_of_the_wrong_size_or_an_empty_canvas_is_an_error_not_a_panic() {
     let scene = lesson_scene();
     let renderer = Renderer::new(&scene).unwrap();
     let mut gif = GifWriter::new(Vec::new(), 320, 240, renderer.palette(), 30).unwrap();
     let error = gif.write_frame(&IndexedFrame::new(32, 24)).unwrap_err();
     assert_eq!(error.kind(), std::io::ErrorKind::InvalidInput, "{error}");
+    let empty = GifWriter::new(Vec::new(), 0, 240, renderer.palette(), 30);
+    assert!(empty.is_err(), "a GIF without pixels is refused");
 }
 
 /// A frame of seeded random indices below `colours`, in runs of 1 to 40, so the LZW
