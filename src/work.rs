@@ -17,6 +17,7 @@ pub enum Work {
     BallCollisions,
 }
 
+#[cfg(debug_assertions)]
 const KINDS: usize = 5;
 
 #[cfg(debug_assertions)]
