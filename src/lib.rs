@@ -6,15 +6,18 @@
 //! GIF and PNG, [`output`] makes files appear whole, [`trace`] writes the CSV, and [`run`]
 //! ties them together for the command line.
 
+pub mod accuracy;
 pub mod ball;
 pub mod effects;
 pub mod encode;
+pub mod exact;
 pub mod floor;
 pub mod integrator;
 pub mod motion;
 pub mod output;
 pub mod overrides;
 pub mod palette;
+pub mod poly;
 pub mod random;
 pub mod render;
 pub mod run;
