@@ -102,16 +102,18 @@ pub fn step(integrator: Integrator, ball: &mut Ball, forces: &Forces, walls: &Wa
     // step) is put back first, so every distance below starts at zero or more.
     walls.bounce(ball);
     let sides = Side::all(walls, ball);
-    integrator.kick_before(ball, &supported(ball, forces, &sides));
+    // Resting can only begin or end at a bounce, so these forces hold until the next one.
+    let mut flight = supported(ball, forces, &sides);
+    integrator.kick_before(ball, &flight);
     let mut left = forces.dt;
     for _ in 0..MAX_EVENTS_PER_STEP {
-        let flight = supported(ball, forces, &sides);
         let path = integrator.path(ball, &flight);
         match first_contact(&sides, ball, &path, left) {
             Some((time, side)) => {
                 integrator.fly(ball, &flight, time);
                 left -= time;
                 side.bounce(ball, walls.damping, forces);
+                flight = supported(ball, forces, &sides);
             }
             None => {
                 integrator.fly(ball, &flight, left);
@@ -121,10 +123,11 @@ pub fn step(integrator: Integrator, ball: &mut Ball, forces: &Forces, walls: &Wa
         }
     }
     if left > 0.0 {
-        integrator.fly(ball, &supported(ball, forces, &sides), left);
+        integrator.fly(ball, &flight, left);
         walls.bounce(ball);
+        flight = supported(ball, forces, &sides);
     }
-    integrator.kick_after(ball, &supported(ball, forces, &sides));
+    integrator.kick_after(ball, &flight);
 }
 
 /// The forces with gravity's push removed on every wall the ball rests on: touching it, not
@@ -149,16 +152,16 @@ fn first_contact(
     path: &[Poly; 2],
     left: f64,
 ) -> Option<(f64, Side)> {
+    // How far the flight can carry the centre along each axis: walls further away are skipped
+    // without looking for roots.
+    let reach = path.map(|p| p.reach(left));
     sides
         .iter()
+        .filter(|side| reach[side.axis] >= side.distance(ball))
         .filter_map(|side| {
             let gap = path[side.axis]
                 .scale(-side.outward)
                 .plus(side.outward * side.contact);
-            // Skip a wall the ball cannot reach this step without looking for roots.
-            if gap.reach(left) < side.distance(ball) {
-                return None;
-            }
             gap.first_negative(left).map(|time| (time, *side))
         })
         .min_by(|a, b| a.0.total_cmp(&b.0))

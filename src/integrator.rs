@@ -30,6 +30,7 @@ pub enum Integrator {
 }
 
 /// Gravity and drag for steps of length `dt`, worked out once per frame, not once per step.
+/// Drag costs one logarithm per ball-frame (and one power with substeps); no drag costs nothing.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Forces {
     /// Step length, frames.
@@ -50,16 +51,32 @@ pub struct Drag {
 }
 
 impl Forces {
-    /// The forces of `effects` for steps of `dt` frames.
-    pub fn new(effects: &Effects, dt: f64) -> Forces {
+    /// The forces of `effects` for one step per frame (`dt = 1`).
+    pub fn new(effects: &Effects) -> Forces {
         Forces {
-            dt,
+            dt: 1.0,
             gravity: effects.gravity,
-            // With dt = 1, `powf(1.0)` is exact: the lesson's `1 - drag` to the last bit.
             drag: effects.drag.map(|drag| Drag {
                 rate: -(-drag).ln_1p(),
-                keep: (1.0 - drag).powf(dt),
+                keep: 1.0 - drag,
             }),
+        }
+    }
+
+    /// The same forces for a frame split into `steps` equal steps. With one step nothing
+    /// changes, so the lesson's `1 - drag` is kept to the last bit.
+    pub fn split(self, steps: u32) -> Forces {
+        if steps == 1 {
+            return self;
+        }
+        let dt = 1.0 / f64::from(steps);
+        Forces {
+            dt,
+            drag: self.drag.map(|drag| Drag {
+                keep: drag.keep.powf(dt),
+                ..drag
+            }),
+            ..self
         }
     }
 
@@ -142,21 +159,23 @@ impl Integrator {
         })
     }
 
-    /// How many steps a frame of `substeps` needs so that this method stays stable under `drag`.
+    /// How many steps a frame of `substeps` needs so that this method stays stable under the
+    /// drag of `frame` (the forces for one step per frame).
     ///
     /// The Euler kicks multiply by `1 − drag` exactly, which is stable for any drag. Verlet and
     /// RK4 treat drag as a force, which overshoots once `λ·dt` passes 2 (Verlet) or 2.78 (RK4);
     /// keeping `λ·dt ≤ 1` also keeps drag from ever reversing a velocity. The lesson's drag
     /// (λ = 0.002) never needs more steps; a drag of 0.99 (λ = 4.6) needs 5 a frame.
-    pub fn steps_per_frame(self, substeps: u32, drag: Option<f64>) -> u32 {
-        let rate = drag.map_or(0.0, |drag| -(-drag).ln_1p());
+    pub fn steps_per_frame(self, substeps: u32, frame: &Forces) -> u32 {
         let curved = matches!(self, Integrator::VelocityVerlet | Integrator::Rk4);
-        if !curved || !rate.is_finite() {
-            return substeps;
+        match frame.drag {
+            Some(drag) if curved && drag.rate.is_finite() => {
+                let per_substep = (drag.rate / f64::from(substeps)).ceil().max(1.0);
+                // λ is at most −ln(2⁻⁵³) ≈ 37 when finite, so this product is small.
+                substeps.saturating_mul(per_substep as u32)
+            }
+            _ => substeps,
         }
-        let per_substep = (rate / f64::from(substeps)).ceil().max(1.0);
-        // λ is at most −ln(2⁻⁵³) ≈ 37 when finite, so this product is small.
-        substeps.saturating_mul(per_substep as u32)
     }
 }
 

@@ -41,8 +41,9 @@ impl Default for Motion {
 impl Motion {
     /// Advances `ball` by one frame under `effects` (its trail is the caller's business).
     pub fn advance(&self, ball: &mut Ball, effects: &Effects) {
-        let steps = self.integrator.steps_per_frame(self.substeps, effects.drag);
-        let forces = Forces::new(effects, 1.0 / f64::from(steps));
+        let frame = Forces::new(effects);
+        let steps = self.integrator.steps_per_frame(self.substeps, &frame);
+        let forces = frame.split(steps);
         for _ in 0..steps {
             let from = [ball.x, ball.y];
             match (self.collisions, &effects.walls) {
