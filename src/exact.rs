@@ -79,7 +79,11 @@ impl Side {
             _ => (&mut ball.y, &mut ball.vy),
         };
         *coordinate = self.contact;
-        let rebound = damping * (*velocity * self.outward).max(0.0);
+        let into = *velocity * self.outward;
+        if into < 0.0 {
+            return; // already leaving (it was a rounding error inside the wall): just put back
+        }
+        let rebound = damping * into;
         *velocity = if rebound < REST_SPEED && self.pressed(forces) {
             0.0
         } else {

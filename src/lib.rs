@@ -4,7 +4,9 @@
 //! One concept per module: [`ball`] and [`walls`] are the lesson's physics, [`simulation`]
 //! advances a [`scene`], [`render`] draws a frame into [`palette`] indices, [`encode`] writes
 //! GIF and PNG, [`output`] makes files appear whole, [`trace`] writes the CSV, and [`run`]
-//! ties them together for the command line.
+//! ties them together for the command line. Beyond the lesson, [`motion`] chooses an
+//! [`integrator`], substeps and a collision mode ([`exact`] bounces at the time of impact,
+//! found with [`poly`]), and [`accuracy`] measures those choices against closed forms.
 
 pub mod accuracy;
 pub mod ball;

@@ -1,0 +1,318 @@
+//! Hard cases for the integrators, substeps and collision modes, each with an asserted bound:
+//! fast balls, corners, resting contact, long elastic runs, extreme magnitudes and drag.
+//! (Zeno's bounces ending in rest are in `tests/accuracy.rs`.)
+
+use bouncing_ball::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
+use bouncing_ball::ball::Ball;
+use bouncing_ball::effects::Effects;
+use bouncing_ball::integrator::Integrator;
+use bouncing_ball::motion::{CollisionMode, Motion};
+use bouncing_ball::walls::Walls;
+
+const INTEGRATORS: [Integrator; 4] = [
+    Integrator::ExplicitEuler,
+    Integrator::SemiImplicitEuler,
+    Integrator::VelocityVerlet,
+    Integrator::Rk4,
+];
+const MODES: [CollisionMode; 2] = [CollisionMode::Clamp, CollisionMode::Exact];
+
+/// Every integrator × collision mode × these substeps.
+fn motions(substeps: &[u32]) -> Vec<Motion> {
+    let mut all = Vec::new();
+    for integrator in INTEGRATORS {
+        for collisions in MODES {
+            for &substeps in substeps {
+                all.push(Motion {
+                    integrator,
+                    substeps,
+                    collisions,
+                });
+            }
+        }
+    }
+    all
+}
+
+fn boxed(width: f64, height: f64, damping: f64, gravity: Option<[f64; 2]>) -> Effects {
+    Effects {
+        gravity,
+        walls: Some(Walls {
+            width,
+            height,
+            damping,
+        }),
+        ..Effects::default()
+    }
+}
+
+/// Asserts the ball is finite and inside its box to 1e-9 px.
+fn assert_inside(ball: &Ball, walls: &Walls, what: &str) {
+    let finite = [ball.x, ball.y, ball.vx, ball.vy]
+        .iter()
+        .all(|v| v.is_finite());
+    assert!(finite, "{what}: expected a finite state, got {ball:?}");
+    let r = ball.radius - 1e-9;
+    let inside =
+        ball.x >= r && ball.x <= walls.width - r && ball.y >= r && ball.y <= walls.height - r;
+    assert!(
+        inside,
+        "{what}: expected the centre within [{r}, {}] × [{r}, {}], got ({}, {})",
+        walls.width - r,
+        walls.height - r,
+        ball.x,
+        ball.y
+    );
+}
+
+/// Runs `frames` frames, checking after each that the ball is finite and inside.
+fn run_inside(motion: Motion, effects: &Effects, mut ball: Ball, frames: u32, what: &str) -> Ball {
+    let walls = effects.walls.expect("a boxed scene");
+    for frame in 0..frames {
+        motion.advance(&mut ball, effects);
+        assert_inside(&ball, &walls, &format!("{what}, {motion:?}, frame {frame}"));
+    }
+    ball
+}
+
+#[test]
+fn a_ball_crossing_ten_canvases_a_frame_stays_inside_and_never_speeds_up_beyond_gravity() {
+    // Walls only shrink speed (damping ≤ 1) and there is no sideways gravity, so |vx| never
+    // grows; |vy| grows by at most g a frame (plus rounding: RK4 adds g in four parts).
+    let effects = lesson_effects(0.88);
+    let walls = effects.walls.unwrap();
+    for motion in motions(&[1, 8]) {
+        let mut ball = Ball::new(160.0, 120.0, 3200.0, 2400.0, RADIUS, 0);
+        for frame in 0..1000 {
+            let (vx, vy) = (ball.vx.abs(), ball.vy.abs());
+            motion.advance(&mut ball, &effects);
+            let what = format!("{motion:?}, frame {frame}");
+            assert_inside(&ball, &walls, &what);
+            assert!(
+                ball.vx.abs() <= vx,
+                "{what}: expected |vx| ≤ {vx}, got {}",
+                ball.vx.abs()
+            );
+            assert!(
+                ball.vy.abs() <= vy + GRAVITY + 1e-12,
+                "{what}: expected |vy| ≤ {} + 1e-12, got {}",
+                vy + GRAVITY,
+                ball.vy.abs()
+            );
+        }
+    }
+}
+
+#[test]
+fn a_corner_hit_reflects_each_velocity_component_exactly_once() {
+    // From (300, 215) at (10, 15) px/frame with no gravity, the ball reaches x 308 at t = 0.8
+    // and y 228 at t = 0.867: both walls in one frame.
+    let effects = boxed(320.0, 240.0, 1.0, None);
+    for motion in motions(&[1]) {
+        let mut ball = Ball::new(300.0, 215.0, 10.0, 15.0, RADIUS, 0);
+        motion.advance(&mut ball, &effects);
+        assert_eq!(
+            (ball.vx, ball.vy),
+            (-10.0, -15.0),
+            "{motion:?}: expected velocity (-10, -15), got ({}, {})",
+            ball.vx,
+            ball.vy
+        );
+        // Clamp puts the ball on both walls; exact flies it back for the rest of the frame.
+        let expected = match motion.collisions {
+            CollisionMode::Clamp => (308.0, 228.0),
+            CollisionMode::Exact => (306.0, 226.0),
+        };
+        let off = (ball.x - expected.0).hypot(ball.y - expected.1);
+        assert!(
+            off < 1e-12,
+            "{motion:?}: expected position {expected:?}, got ({}, {})",
+            ball.x,
+            ball.y
+        );
+    }
+}
+
+#[test]
+fn a_resting_ball_never_sinks_and_its_clamp_jitter_stays_under_the_derived_bound() {
+    // Clamp, semi-implicit Euler: a ball on the floor ending a frame at vy = −a gets
+    // vy = g − a, would sink, is clamped and reflected: a' = e·(g − a). The fixed point is
+    // a = e·g/(1 + e), so after settling the ball stays on the floor line with |vy| ≤ that.
+    let e = 0.88;
+    let bound = e * GRAVITY / (1.0 + e);
+    let effects = lesson_effects(e);
+    for motion in motions(&[1]) {
+        let mut ball = Ball::new(160.0, 40.0, 0.0, 0.0, RADIUS, 0);
+        for frame in 0..1_000_000 {
+            motion.advance(&mut ball, &effects);
+            assert!(
+                ball.y <= FLOOR,
+                "{motion:?}, frame {frame}: expected y ≤ {FLOOR}, got {}",
+                ball.y
+            );
+        }
+        match (motion.collisions, motion.integrator) {
+            (CollisionMode::Exact, _) => assert!(
+                ball.y == FLOOR && ball.vy == 0.0,
+                "{motion:?}: expected exact rest at y {FLOOR}, vy 0; got y {}, vy {}",
+                ball.y,
+                ball.vy
+            ),
+            (CollisionMode::Clamp, Integrator::SemiImplicitEuler) => assert!(
+                ball.y == FLOOR && ball.vy.abs() <= bound + 1e-12,
+                "{motion:?}: expected y {FLOOR} and |vy| ≤ {bound}; got y {}, vy {}",
+                ball.y,
+                ball.vy
+            ),
+            _ => {}
+        }
+    }
+}
+
+#[test]
+fn an_elastic_exact_ball_keeps_its_apex_for_a_million_frames() {
+    // Dropped from y 40 at 0.3 px/frame: apex 188 + 0.3²/2g px above the floor, forever.
+    let expected = (FLOOR - 40.0) + 0.3 * 0.3 / (2.0 * GRAVITY);
+    for integrator in [Integrator::VelocityVerlet, Integrator::Rk4] {
+        let motion = Motion {
+            integrator,
+            collisions: CollisionMode::Exact,
+            ..Motion::default()
+        };
+        let worst = bounces(motion, 1.0, 40.0, 0.3, 1_000_000)
+            .iter()
+            .map(|b| (b.flight_apex - expected).abs() / expected)
+            .fold(0.0, f64::max);
+        assert!(
+            worst < 1e-9,
+            "{integrator:?}: expected every apex within 1e-9 of {expected}, worst {worst:e}"
+        );
+    }
+}
+
+#[test]
+fn without_gravity_an_elastic_ball_keeps_its_speed_to_the_bit() {
+    // Reflection only flips signs, and no integrator changes a velocity without a force.
+    let effects = boxed(320.0, 240.0, 1.0, None);
+    for motion in motions(&[1, 3]) {
+        let ball = Ball::new(100.0, 100.0, 7.3, -4.1, RADIUS, 0);
+        let ball = run_inside(motion, &effects, ball, 100_000, "no gravity");
+        assert_eq!(
+            (ball.vx.abs(), ball.vy.abs()),
+            (7.3, 4.1),
+            "{motion:?}: expected speeds (7.3, 4.1), got ({}, {})",
+            ball.vx.abs(),
+            ball.vy.abs()
+        );
+    }
+}
+
+#[test]
+fn extreme_magnitudes_stay_finite_and_inside() {
+    let lesson = |gravity| boxed(320.0, 240.0, 0.88, Some([0.0, gravity]));
+    let cases = [
+        (
+            "gravity 1e-12",
+            lesson(1e-12),
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+        ),
+        (
+            "gravity 1e6",
+            lesson(1e6),
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+        ),
+        (
+            "speed 1e9",
+            lesson(0.5),
+            Ball::new(40.0, 40.0, 1e9, -1e9, RADIUS, 0),
+        ),
+        (
+            "2·radius just under the width",
+            boxed(100.0, 300.0, 0.88, Some([0.0, 0.5])),
+            Ball::new(50.0, 100.0, 3.0, 0.0, 49.999_999, 0),
+        ),
+        (
+            "a 1-px ball in an 8192 canvas",
+            boxed(8192.0, 8192.0, 0.88, Some([0.0, 0.5])),
+            Ball::new(4000.0, 100.0, 37.3, -12.9, 0.5, 0),
+        ),
+    ];
+    for (what, effects, ball) in cases {
+        for motion in motions(&[1, 4]) {
+            run_inside(motion, &effects, ball.clone(), 2000, what);
+        }
+    }
+}
+
+#[test]
+fn drag_1_stops_the_ball_within_its_first_frame_and_it_never_moves_again() {
+    let effects = Effects {
+        drag: Some(1.0),
+        ..lesson_effects(0.88)
+    };
+    for motion in motions(&[1, 4]) {
+        let mut ball = Ball::new(100.0, 100.0, 5.2, -3.0, RADIUS, 0);
+        motion.advance(&mut ball, &effects);
+        assert_eq!(
+            (ball.vx, ball.vy),
+            (0.0, 0.0),
+            "{motion:?}: expected no velocity after one frame, got ({}, {})",
+            ball.vx,
+            ball.vy
+        );
+        let stopped = (ball.x, ball.y);
+        let ball = run_inside(motion, &effects, ball, 100, "drag 1");
+        assert_eq!(
+            (ball.x, ball.y),
+            stopped,
+            "{motion:?}: expected the ball to stay at {stopped:?}"
+        );
+    }
+}
+
+#[test]
+fn drag_0_changes_no_bit_of_the_motion() {
+    let without = lesson_effects(0.88);
+    let with = Effects {
+        drag: Some(0.0),
+        ..lesson_effects(0.88)
+    };
+    for motion in motions(&[1, 4]) {
+        let (mut a, mut b) = (
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+        );
+        for frame in 0..1000 {
+            motion.advance(&mut a, &without);
+            motion.advance(&mut b, &with);
+            assert_eq!(
+                a, b,
+                "{motion:?}, frame {frame}: drag 0 must change nothing"
+            );
+        }
+    }
+}
+
+#[test]
+fn drag_without_gravity_slows_the_ball_as_the_closed_form_says() {
+    // No gravity, no walls: v(n) = v0·(1 − drag)^n along the same line.
+    let drag = 0.002;
+    let effects = Effects {
+        drag: Some(drag),
+        ..Effects::default()
+    };
+    for motion in motions(&[1, 4]) {
+        let mut ball = Ball::new(0.0, 0.0, 5.2, -3.0, RADIUS, 0);
+        for _ in 0..1000 {
+            motion.advance(&mut ball, &effects);
+        }
+        let keep = (1.0 - drag).powi(1000);
+        for (v, v0) in [(ball.vx, 5.2), (ball.vy, -3.0)] {
+            let expected = v0 * keep;
+            assert!(
+                ((v - expected) / expected).abs() < 1e-6,
+                "{motion:?}: expected velocity {expected}, got {v}"
+            );
+        }
+    }
+}
