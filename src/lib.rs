@@ -5,13 +5,18 @@
 //! advances a [`scene`], [`render`] draws a frame into [`palette`] indices, [`delta`] finds
 //! what changed since the last frame, [`lzw`] compresses it, [`encode`] writes GIF and PNG,
 //! [`output`] makes files appear whole, [`trace`] writes the CSV, [`progress`] shows how far
-//! a long run is, and [`run`] ties them together for the command line.
+//! a long run is, and [`run`] ties them together for the command line. Beyond the lesson,
+//! [`motion`] chooses an [`integrator`], substeps and a collision mode ([`exact`] bounces at
+//! the time of impact, found with [`poly`]), [`collisions`] and [`grid`] handle ball-ball
+//! contacts, and [`accuracy`] measures the solver choices against closed forms.
 
+pub mod accuracy;
 pub mod ball;
 pub mod collisions;
 pub mod delta;
 pub mod effects;
 pub mod encode;
+pub mod exact;
 pub mod floor;
 pub mod grid;
 pub mod integrator;
@@ -20,6 +25,7 @@ pub mod motion;
 pub mod output;
 pub mod overrides;
 pub mod palette;
+pub mod poly;
 pub mod progress;
 pub mod random;
 pub mod render;

@@ -4,7 +4,8 @@
 
 use crate::ball::Ball;
 use crate::effects::Effects;
-use crate::integrator::Integrator;
+use crate::exact;
+use crate::integrator::{Forces, Integrator};
 
 /// How a ball's contact with a wall or floor is resolved.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
@@ -13,6 +14,9 @@ pub enum CollisionMode {
     /// The lesson's: after the step, clamp the ball back to the wall and reflect its velocity.
     #[default]
     Clamp,
+    /// Bounce off the walls at the moment of impact within the step (see `crate::exact`);
+    /// floors are still clamped after the step.
+    Exact,
 }
 
 /// The solver settings for one frame.
@@ -37,10 +41,18 @@ impl Default for Motion {
 impl Motion {
     /// Advances `ball` by one frame under `effects` (its trail is the caller's business).
     pub fn advance(&self, ball: &mut Ball, effects: &Effects) {
-        let dt = 1.0 / f64::from(self.substeps);
-        for _ in 0..self.substeps {
+        let frame = Forces::new(effects);
+        let steps = self.integrator.steps_per_frame(self.substeps, &frame);
+        let forces = frame.split(steps);
+        for _ in 0..steps {
             let from = [ball.x, ball.y];
-            self.integrator.step(ball, effects, dt);
+            match (self.collisions, &effects.walls) {
+                (CollisionMode::Exact, Some(walls)) => {
+                    exact::step(self.integrator, ball, &forces, walls);
+                }
+                _ => self.integrator.step(ball, &forces),
+            }
+            // Exact mode leaves the ball inside the walls, where this only resolves floors.
             effects.clamp_and_reflect(ball, from);
         }
     }

@@ -1,10 +1,38 @@
-//! The named hard cases of the stability suite (clamp mode, the lesson's physics). Each test
-//! asserts a bound and prints the bound and the value seen; "it did not panic" is not enough.
+//! Hard cases for the integrators, substeps and collision modes, each with an asserted bound:
+//! fast balls, corners, resting contact, long elastic runs, extreme magnitudes and drag.
+//! Also slopes and ball-ball contacts. (Zeno's bounces ending in rest are in `tests/accuracy.rs`.)
 
+use bouncing_ball::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
 use bouncing_ball::ball::Ball;
 use bouncing_ball::effects::Effects;
-use bouncing_ball::motion::Motion;
+use bouncing_ball::integrator::Integrator;
+use bouncing_ball::motion::{CollisionMode, Motion};
 use bouncing_ball::walls::Walls;
+
+const INTEGRATORS: [Integrator; 4] = [
+    Integrator::ExplicitEuler,
+    Integrator::SemiImplicitEuler,
+    Integrator::VelocityVerlet,
+    Integrator::Rk4,
+];
+const MODES: [CollisionMode; 2] = [CollisionMode::Clamp, CollisionMode::Exact];
+
+/// Every integrator × collision mode × these substeps.
+fn motions(substeps: &[u32]) -> Vec<Motion> {
+    let mut all = Vec::new();
+    for integrator in INTEGRATORS {
+        for collisions in MODES {
+            for &substeps in substeps {
+                all.push(Motion {
+                    integrator,
+                    substeps,
+                    collisions,
+                });
+            }
+        }
+    }
+    all
+}
 
 fn boxed(width: f64, height: f64, damping: f64, gravity: Option<[f64; 2]>) -> Effects {
     Effects {
@@ -18,59 +46,57 @@ fn boxed(width: f64, height: f64, damping: f64, gravity: Option<[f64; 2]>) -> Ef
     }
 }
 
-fn with_substeps(substeps: u32) -> Motion {
-    Motion {
-        substeps,
-        ..Motion::default()
-    }
-}
-
-/// Fails unless the ball is finite and inside the `width` × `height` box (to 1e-9).
-fn assert_inside(ball: &Ball, width: f64, height: f64, context: &str) {
+/// Asserts the ball is finite and inside its box to 1e-9 px.
+fn assert_inside(ball: &Ball, walls: &Walls, what: &str) {
     let finite = [ball.x, ball.y, ball.vx, ball.vy]
         .iter()
         .all(|v| v.is_finite());
-    assert!(finite, "{context}: state must be finite: {ball:?}");
-    let r = ball.radius;
-    let tolerance = 1e-9 * width.max(height);
-    let inside = ball.x >= r - tolerance
-        && ball.x <= width - r + tolerance
-        && ball.y >= r - tolerance
-        && ball.y <= height - r + tolerance;
+    assert!(finite, "{what}: expected a finite state, got {ball:?}");
+    let r = ball.radius - 1e-9;
+    let inside =
+        ball.x >= r && ball.x <= walls.width - r && ball.y >= r && ball.y <= walls.height - r;
     assert!(
         inside,
-        "{context}: centre must be within [{r}, {}] × [{r}, {}], got ({}, {})",
-        width - r,
-        height - r,
+        "{what}: expected the centre within [{r}, {}] × [{r}, {}], got ({}, {})",
+        walls.width - r,
+        walls.height - r,
         ball.x,
         ball.y
     );
 }
 
+/// Runs `frames` frames, checking after each that the ball is finite and inside.
+fn run_inside(motion: Motion, effects: &Effects, mut ball: Ball, frames: u32, what: &str) -> Ball {
+    let walls = effects.walls.expect("a boxed scene");
+    for frame in 0..frames {
+        motion.advance(&mut ball, effects);
+        assert_inside(&ball, &walls, &format!("{what}, {motion:?}, frame {frame}"));
+    }
+    ball
+}
+
 #[test]
-fn case_1_a_ball_ten_canvases_per_frame_stays_inside_and_never_gains_speed() {
-    for substeps in [1, 10] {
-        let effects = boxed(320.0, 240.0, 0.88, Some([0.0, 0.5]));
-        let mut ball = Ball::new(160.0, 120.0, 3200.0, -2400.0, 12.0, 0);
-        let (vx0, vy0) = (ball.vx.abs(), ball.vy.abs());
-        for frame in 1..=1000u32 {
-            ball.step(&effects, &with_substeps(substeps));
-            assert_inside(
-                &ball,
-                320.0,
-                240.0,
-                &format!("substeps {substeps}, frame {frame}"),
-            );
-            // Reflection only scales a component by damping ≤ 1; gravity adds at most g per frame.
-            let vy_bound = vy0 + 0.5 * f64::from(frame);
+fn a_ball_crossing_ten_canvases_a_frame_stays_inside_and_never_speeds_up_beyond_gravity() {
+    // Walls only shrink speed (damping ≤ 1) and there is no sideways gravity, so |vx| never
+    // grows; |vy| grows by at most g a frame (plus rounding: RK4 adds g in four parts).
+    let effects = lesson_effects(0.88);
+    let walls = effects.walls.unwrap();
+    for motion in motions(&[1, 8]) {
+        let mut ball = Ball::new(160.0, 120.0, 3200.0, 2400.0, RADIUS, 0);
+        for frame in 0..1000 {
+            let (vx, vy) = (ball.vx.abs(), ball.vy.abs());
+            motion.advance(&mut ball, &effects);
+            let what = format!("{motion:?}, frame {frame}");
+            assert_inside(&ball, &walls, &what);
             assert!(
-                ball.vx.abs() <= vx0,
-                "frame {frame}: |vx| bound {vx0}, got {}",
+                ball.vx.abs() <= vx,
+                "{what}: expected |vx| ≤ {vx}, got {}",
                 ball.vx.abs()
             );
             assert!(
-                ball.vy.abs() <= vy_bound,
-                "frame {frame}: |vy| bound {vy_bound}, got {}",
+                ball.vy.abs() <= vy + GRAVITY + 1e-12,
+                "{what}: expected |vy| ≤ {} + 1e-12, got {}",
+                vy + GRAVITY,
                 ball.vy.abs()
             );
         }
@@ -78,164 +104,221 @@ fn case_1_a_ball_ten_canvases_per_frame_stays_inside_and_never_gains_speed() {
 }
 
 #[test]
-fn case_2_a_corner_hit_reflects_each_velocity_component_exactly_once() {
-    let effects = boxed(320.0, 240.0, 0.8, Some([0.0, 0.5]));
-    // Heading into the bottom-right corner, crossing both walls in this one frame.
-    let mut ball = Ball::new(300.0, 220.0, 15.0, 15.0, 12.0, 0);
-    ball.step(&effects, &Motion::default());
-    let (expected_vx, expected_vy) = (-15.0 * 0.8, -(15.0 + 0.5) * 0.8);
-    assert_eq!(
-        ball.vx, expected_vx,
-        "vx: expected {expected_vx}, got {}",
-        ball.vx
-    );
-    assert_eq!(
-        ball.vy, expected_vy,
-        "vy: expected {expected_vy}, got {}",
-        ball.vy
-    );
-    assert_eq!((ball.x, ball.y), (308.0, 228.0), "clamped into the corner");
+fn a_corner_hit_reflects_each_velocity_component_exactly_once() {
+    // From (300, 215) at (10, 15) px/frame with no gravity, the ball reaches x 308 at t = 0.8
+    // and y 228 at t = 0.867: both walls in one frame.
+    let effects = boxed(320.0, 240.0, 1.0, None);
+    for motion in motions(&[1]) {
+        let mut ball = Ball::new(300.0, 215.0, 10.0, 15.0, RADIUS, 0);
+        motion.advance(&mut ball, &effects);
+        assert_eq!(
+            (ball.vx, ball.vy),
+            (-10.0, -15.0),
+            "{motion:?}: expected velocity (-10, -15), got ({}, {})",
+            ball.vx,
+            ball.vy
+        );
+        // Clamp puts the ball on both walls; exact flies it back for the rest of the frame.
+        let expected = match motion.collisions {
+            CollisionMode::Clamp => (308.0, 228.0),
+            CollisionMode::Exact => (306.0, 226.0),
+        };
+        let off = (ball.x - expected.0).hypot(ball.y - expected.1);
+        assert!(
+            off < 1e-12,
+            "{motion:?}: expected position {expected:?}, got ({}, {})",
+            ball.x,
+            ball.y
+        );
+    }
 }
 
 #[test]
-fn case_3_resting_contact_in_clamp_mode_never_sinks_and_its_residual_bounce_stays_bounded() {
-    // At rest on the floor, each frame adds g, the step sinks by that much, the clamp lifts it
-    // back and the reflection leaves vy = -e·(v + g). The fixed point is v* = -e·g/(1 + e):
-    // the ball ends every frame exactly touching the floor, with |vy| ≤ e·g/(1 + e).
-    let (e, g) = (0.88, 0.5);
-    let effects = boxed(320.0, 240.0, e, Some([0.0, g]));
-    let mut ball = Ball::new(160.0, 40.0, 0.0, 0.0, 12.0, 0);
-    let floor = 240.0 - 12.0;
-    let bound = e * g / (1.0 + e);
-    let mut worst = 0.0f64;
-    for frame in 1..=1_000_000u32 {
-        ball.step(&effects, &Motion::default());
+fn a_resting_ball_never_sinks_and_its_clamp_jitter_stays_under_the_derived_bound() {
+    // Clamp, semi-implicit Euler: a ball on the floor ending a frame at vy = −a gets
+    // vy = g − a, would sink, is clamped and reflected: a' = e·(g − a). The fixed point is
+    // a = e·g/(1 + e), so after settling the ball stays on the floor line with |vy| ≤ that.
+    let e = 0.88;
+    let bound = e * GRAVITY / (1.0 + e);
+    let effects = lesson_effects(e);
+    for motion in motions(&[1]) {
+        let mut ball = Ball::new(160.0, 40.0, 0.0, 0.0, RADIUS, 0);
+        for frame in 0..1_000_000 {
+            motion.advance(&mut ball, &effects);
+            assert!(
+                ball.y <= FLOOR,
+                "{motion:?}, frame {frame}: expected y ≤ {FLOOR}, got {}",
+                ball.y
+            );
+        }
+        match (motion.collisions, motion.integrator) {
+            (CollisionMode::Exact, _) => assert!(
+                ball.y == FLOOR && ball.vy == 0.0,
+                "{motion:?}: expected exact rest at y {FLOOR}, vy 0; got y {}, vy {}",
+                ball.y,
+                ball.vy
+            ),
+            (CollisionMode::Clamp, Integrator::SemiImplicitEuler) => assert!(
+                ball.y == FLOOR && ball.vy.abs() <= bound + 1e-12,
+                "{motion:?}: expected y {FLOOR} and |vy| ≤ {bound}; got y {}, vy {}",
+                ball.y,
+                ball.vy
+            ),
+            _ => {}
+        }
+    }
+}
+
+#[test]
+fn an_elastic_exact_ball_keeps_its_apex_for_a_million_frames() {
+    // Dropped from y 40 at 0.3 px/frame: apex 188 + 0.3²/2g px above the floor, forever.
+    let expected = (FLOOR - 40.0) + 0.3 * 0.3 / (2.0 * GRAVITY);
+    for integrator in [Integrator::VelocityVerlet, Integrator::Rk4] {
+        let motion = Motion {
+            integrator,
+            collisions: CollisionMode::Exact,
+            ..Motion::default()
+        };
+        let worst = bounces(motion, 1.0, 40.0, 0.3, 1_000_000)
+            .iter()
+            .map(|b| (b.flight_apex - expected).abs() / expected)
+            .fold(0.0, f64::max);
         assert!(
-            ball.y <= floor,
-            "frame {frame}: never below the floor: y ≤ {floor}, got {}",
-            ball.y
+            worst < 1e-9,
+            "{integrator:?}: expected every apex within 1e-9 of {expected}, worst {worst:e}"
         );
-        if frame > 2000 {
-            worst = worst.max(ball.vy.abs());
+    }
+}
+
+#[test]
+fn without_gravity_an_elastic_ball_keeps_its_speed_to_the_bit() {
+    // Reflection only flips signs, and no integrator changes a velocity without a force.
+    let effects = boxed(320.0, 240.0, 1.0, None);
+    for motion in motions(&[1, 3]) {
+        let ball = Ball::new(100.0, 100.0, 7.3, -4.1, RADIUS, 0);
+        let ball = run_inside(motion, &effects, ball, 100_000, "no gravity");
+        assert_eq!(
+            (ball.vx.abs(), ball.vy.abs()),
+            (7.3, 4.1),
+            "{motion:?}: expected speeds (7.3, 4.1), got ({}, {})",
+            ball.vx.abs(),
+            ball.vy.abs()
+        );
+    }
+}
+
+#[test]
+fn extreme_magnitudes_stay_finite_and_inside() {
+    let lesson = |gravity| boxed(320.0, 240.0, 0.88, Some([0.0, gravity]));
+    let cases = [
+        (
+            "gravity 1e-12",
+            lesson(1e-12),
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+        ),
+        (
+            "gravity 1e6",
+            lesson(1e6),
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+        ),
+        (
+            "speed 1e9",
+            lesson(0.5),
+            Ball::new(40.0, 40.0, 1e9, -1e9, RADIUS, 0),
+        ),
+        (
+            "2·radius just under the width",
+            boxed(100.0, 300.0, 0.88, Some([0.0, 0.5])),
+            Ball::new(50.0, 100.0, 3.0, 0.0, 49.999_999, 0),
+        ),
+        (
+            "a 1-px ball in an 8192 canvas",
+            boxed(8192.0, 8192.0, 0.88, Some([0.0, 0.5])),
+            Ball::new(4000.0, 100.0, 37.3, -12.9, 0.5, 0),
+        ),
+    ];
+    for (what, effects, ball) in cases {
+        for motion in motions(&[1, 4]) {
+            run_inside(motion, &effects, ball.clone(), 2000, what);
+        }
+    }
+}
+
+#[test]
+fn drag_1_stops_the_ball_within_its_first_frame_and_it_never_moves_again() {
+    let effects = Effects {
+        drag: Some(1.0),
+        ..lesson_effects(0.88)
+    };
+    for motion in motions(&[1, 4]) {
+        let mut ball = Ball::new(100.0, 100.0, 5.2, -3.0, RADIUS, 0);
+        motion.advance(&mut ball, &effects);
+        assert_eq!(
+            (ball.vx, ball.vy),
+            (0.0, 0.0),
+            "{motion:?}: expected no velocity after one frame, got ({}, {})",
+            ball.vx,
+            ball.vy
+        );
+        let stopped = (ball.x, ball.y);
+        let ball = run_inside(motion, &effects, ball, 100, "drag 1");
+        assert_eq!(
+            (ball.x, ball.y),
+            stopped,
+            "{motion:?}: expected the ball to stay at {stopped:?}"
+        );
+    }
+}
+
+#[test]
+fn drag_0_changes_no_bit_of_the_motion() {
+    let without = lesson_effects(0.88);
+    let with = Effects {
+        drag: Some(0.0),
+        ..lesson_effects(0.88)
+    };
+    for motion in motions(&[1, 4]) {
+        let (mut a, mut b) = (
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+        );
+        for frame in 0..1000 {
+            motion.advance(&mut a, &without);
+            motion.advance(&mut b, &with);
             assert_eq!(
-                ball.y, floor,
-                "frame {frame}: settled, the ball ends each frame touching the floor"
+                a, b,
+                "{motion:?}, frame {frame}: drag 0 must change nothing"
             );
         }
     }
-    assert!(
-        worst <= bound + 1e-12,
-        "residual |vy| bound e·g/(1+e) = {bound}, worst seen {worst}"
-    );
 }
 
 #[test]
-fn case_6_extreme_magnitudes_stay_finite_and_inside() {
-    struct Case {
-        name: &'static str,
-        size: (f64, f64),
-        ball: Ball,
-        gravity: f64,
-    }
-    let cases = [
-        Case {
-            name: "gravity 1e-12",
-            size: (320.0, 240.0),
-            ball: Ball::new(40.0, 40.0, 5.2, 0.0, 12.0, 0),
-            gravity: 1e-12,
-        },
-        Case {
-            name: "gravity 1e6",
-            size: (320.0, 240.0),
-            ball: Ball::new(40.0, 40.0, 5.2, 0.0, 12.0, 0),
-            gravity: 1e6,
-        },
-        Case {
-            name: "velocity 1e9",
-            size: (320.0, 240.0),
-            ball: Ball::new(40.0, 40.0, 1e9, -1e9, 12.0, 0),
-            gravity: 0.5,
-        },
-        Case {
-            name: "2·radius just under the width",
-            size: (320.0, 400.0),
-            ball: Ball::new(160.0, 200.0, 3.0, 1.0, 159.999, 0),
-            gravity: 0.5,
-        },
-        Case {
-            name: "1 px ball in an 8192 canvas",
-            size: (8192.0, 8192.0),
-            ball: Ball::new(4000.0, 10.0, 37.0, 0.0, 1.0, 0),
-            gravity: 0.5,
-        },
-    ];
-    for case in cases {
-        let (w, h) = case.size;
-        let effects = boxed(w, h, 0.88, Some([0.0, case.gravity]));
-        let mut ball = case.ball;
-        for frame in 1..=10_000 {
-            ball.step(&effects, &Motion::default());
-            assert_inside(&ball, w, h, &format!("{}, frame {frame}", case.name));
+fn drag_without_gravity_slows_the_ball_as_the_closed_form_says() {
+    // No gravity, no walls: v(n) = v0·(1 − drag)^n along the same line.
+    let drag = 0.002;
+    let effects = Effects {
+        drag: Some(drag),
+        ..Effects::default()
+    };
+    for motion in motions(&[1, 4]) {
+        let mut ball = Ball::new(0.0, 0.0, 5.2, -3.0, RADIUS, 0);
+        for _ in 0..1000 {
+            motion.advance(&mut ball, &effects);
+        }
+        let keep = (1.0 - drag).powi(1000);
+        for (v, v0) in [(ball.vx, 5.2), (ball.vy, -3.0)] {
+            let expected = v0 * keep;
+            assert!(
+                ((v - expected) / expected).abs() < 1e-6,
+                "{motion:?}: expected velocity {expected}, got {v}"
+            );
         }
     }
 }
 
 #[test]
-fn case_9_drag_of_one_stops_the_ball_at_once() {
-    let effects = Effects {
-        drag: Some(1.0),
-        ..boxed(320.0, 240.0, 0.88, Some([0.0, 0.5]))
-    };
-    let mut ball = Ball::new(100.0, 100.0, 7.0, -3.0, 12.0, 0);
-    ball.step(&effects, &Motion::default());
-    assert_eq!(
-        (ball.vx, ball.vy),
-        (0.0, 0.0),
-        "velocity after one frame of drag 1"
-    );
-    assert_eq!((ball.x, ball.y), (100.0, 100.0), "the ball does not move");
-}
-
-#[test]
-fn case_9_drag_of_zero_changes_nothing() {
-    let plain = boxed(320.0, 240.0, 0.88, Some([0.0, 0.5]));
-    let zero_drag = Effects {
-        drag: Some(0.0),
-        ..plain.clone()
-    };
-    let (mut a, mut b) = (
-        Ball::new(40.0, 40.0, 5.2, 0.0, 12.0, 5),
-        Ball::new(40.0, 40.0, 5.2, 0.0, 12.0, 5),
-    );
-    for _ in 0..1000 {
-        a.step(&plain, &Motion::default());
-        b.step(&zero_drag, &Motion::default());
-    }
-    assert_eq!(a, b, "drag 0 must give the same state, bit for bit");
-}
-
-#[test]
-fn case_9_drag_without_gravity_decays_speed_geometrically() {
-    // No gravity, no walls in reach: |v_n| = |v_0| · (1 − k)^n.
-    let k = 0.002;
-    let effects = Effects {
-        drag: Some(k),
-        ..Effects::default()
-    };
-    let mut ball = Ball::new(0.0, 0.0, 3.0, 4.0, 1.0, 0);
-    for n in 1..=1000 {
-        ball.step(&effects, &Motion::default());
-        let expected = 5.0 * (1.0 - k).powi(n);
-        let speed = ball.vx.hypot(ball.vy);
-        assert!(
-            (speed - expected).abs() <= 1e-12 * expected,
-            "frame {n}: expected speed {expected}, got {speed}"
-        );
-    }
-}
-
-#[test]
-fn case_8_a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink() {
+fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink() {
     use bouncing_ball::floor::Floor;
     // A 60° slope from the top wall to the bottom wall, so no ball can go around its ends;
     // balls thrown at it at up to 30 diameters per frame.
@@ -311,7 +394,7 @@ mod ball_ball {
     }
 
     #[test]
-    fn case_7_balls_spawned_at_one_centre_separate_and_never_stick() {
+    fn balls_spawned_at_one_centre_separate_and_never_stick() {
         let balls = (0..20).map(|_| spec(160.0, 120.0, 0.0, 0.0, 6.0)).collect();
         let scene = Scene {
             balls,
@@ -342,7 +425,7 @@ mod ball_ball {
     /// The depth of a new overlap is at most the pair's approach in one frame, 2 × max speed
     /// (here 2 × 1 px = 2 px = half a radius); we assert half a radius.
     #[test]
-    fn case_7_a_thousand_balls_packed_at_half_the_area_stay_finite_bounded_and_lose_energy() {
+    fn a_thousand_balls_packed_at_half_the_area_stay_finite_bounded_and_lose_energy() {
         let mut random = Random::new(7);
         let radius = 4.0;
         // 1,000 × π × 4² ≈ 50,265 px² of balls in a 317 × 317 box ≈ half of it.

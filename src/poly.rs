@@ -1,0 +1,182 @@
+//! Polynomials of low degree in time: the flights of the integrators, and the distances
+//! between a ball and a wall along them. Owns one question: when does such a distance first
+//! drop below zero?
+//!
+//! The method needs no formula per degree: a polynomial is monotone between the roots of its
+//! derivative, so on each of those pieces it crosses zero at most once, and bisection finds
+//! that crossing to the last bit. The derivative's roots are found the same way, one degree down.
+
+/// The highest degree held: RK4's flight is a quartic.
+const MAX_DEGREE: usize = 4;
+
+/// `c[0] + c[1]·t + c[2]·t² + …`
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Poly {
+    c: [f64; MAX_DEGREE + 1],
+    /// Index of the highest non-zero coefficient (0 for a constant).
+    degree: usize,
+}
+
+/// At most `MAX_DEGREE` roots, in increasing order, without allocating.
+struct Roots {
+    t: [f64; MAX_DEGREE],
+    len: usize,
+}
+
+impl Poly {
+    /// The polynomial with coefficients `c`, lowest degree first.
+    pub fn new(c: &[f64]) -> Poly {
+        let mut p = Poly {
+            c: [0.0; MAX_DEGREE + 1],
+            degree: 0,
+        };
+        p.c[..c.len()].copy_from_slice(c);
+        p.trim();
+        p
+    }
+
+    fn trim(&mut self) {
+        self.degree = self.c.iter().rposition(|&c| c != 0.0).unwrap_or(0);
+    }
+
+    /// The value at `t` (Horner's rule).
+    pub fn at(&self, t: f64) -> f64 {
+        self.c[..=self.degree]
+            .iter()
+            .rev()
+            .fold(0.0, |sum, &c| sum * t + c)
+    }
+
+    /// `k · self`.
+    pub fn scale(mut self, k: f64) -> Poly {
+        self.c.iter_mut().for_each(|c| *c *= k);
+        self.trim();
+        self
+    }
+
+    /// `self + k`.
+    pub fn plus(mut self, k: f64) -> Poly {
+        self.c[0] += k;
+        self.trim();
+        self
+    }
+
+    fn derivative(&self) -> Poly {
+        let mut c = [0.0; MAX_DEGREE + 1];
+        for i in 1..=self.degree {
+            c[i - 1] = self.c[i] * i as f64;
+        }
+        let mut d = Poly { c, degree: 0 };
+        d.trim();
+        d
+    }
+
+    /// The largest `|self(t) − self(0)|` can be for `t` in `[0, end]`: a cheap bound that
+    /// lets a wall far from the ball be skipped without looking for roots.
+    pub fn reach(&self, end: f64) -> f64 {
+        self.c[1..=self.degree.max(1)]
+            .iter()
+            .rev()
+            .fold(0.0, |sum, &c| (sum + c.abs()) * end)
+    }
+
+    /// The first time in `[0, end]` at which the polynomial is below zero, if any, as the last
+    /// time it was still ≥ 0 (so a ball moved there is touching, not inside). Assumes `at(0) ≥ 0`.
+    pub fn first_negative(&self, end: f64) -> Option<f64> {
+        let mut left = 0.0;
+        let derivative_roots = self.derivative().roots(0.0, end);
+        for &right in derivative_roots.t[..derivative_roots.len]
+            .iter()
+            .chain([end].iter())
+        {
+            if self.at(right) < 0.0 {
+                return Some(self.bisect(left, right));
+            }
+            left = right;
+        }
+        None
+    }
+
+    /// Every root strictly inside `(start, end)` where the sign changes, in increasing order.
+    fn roots(&self, start: f64, end: f64) -> Roots {
+        let mut roots = Roots {
+            t: [0.0; MAX_DEGREE],
+            len: 0,
+        };
+        if self.degree == 0 {
+            return roots;
+        }
+        let turns = self.derivative().roots(start, end);
+        let mut left = start;
+        for &right in turns.t[..turns.len].iter().chain([end].iter()) {
+            let (a, b) = (self.at(left), self.at(right));
+            if (a < 0.0) != (b < 0.0) && a != 0.0 && b != 0.0 {
+                let root = if a > 0.0 {
+                    self.bisect(left, right)
+                } else {
+                    self.scale(-1.0).bisect(left, right)
+                };
+                roots.t[roots.len] = root;
+                roots.len += 1;
+            }
+            left = right;
+        }
+        roots
+    }
+
+    /// Narrows `[left, right]` (`≥ 0` at `left`, `< 0` at `right`) down to adjacent numbers
+    /// and returns `left`, the last point not below zero.
+    fn bisect(&self, mut left: f64, mut right: f64) -> f64 {
+        loop {
+            let mid = left + (right - left) / 2.0;
+            if mid <= left || mid >= right {
+                return left;
+            }
+            if self.at(mid) < 0.0 {
+                right = mid;
+            } else {
+                left = mid;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_falling_parabola_first_drops_below_zero_at_its_root() {
+        // 1 + 0·t − t²/2 · 2 = 1 − t²: root at t = 1.
+        let p = Poly::new(&[1.0, 0.0, -1.0]);
+        let t = p.first_negative(2.0).expect("a root in [0, 2]");
+        assert!((t - 1.0).abs() < 1e-15, "expected 1, got {t}");
+    }
+
+    #[test]
+    fn a_dip_below_zero_between_two_positive_ends_is_found() {
+        // (t − 1)(t − 2) = 2 − 3t + t²: positive at 0 and 3, negative between 1 and 2.
+        let p = Poly::new(&[2.0, -3.0, 1.0]);
+        let t = p.first_negative(3.0).expect("the dip");
+        assert!((t - 1.0).abs() < 1e-15, "expected 1, got {t}");
+    }
+
+    #[test]
+    fn a_polynomial_that_stays_positive_has_no_crossing() {
+        let p = Poly::new(&[1.0, -1.0, 1.0]);
+        assert_eq!(p.first_negative(10.0), None, "t² − t + 1 > 0 everywhere");
+        assert_eq!(
+            Poly::new(&[0.0]).first_negative(1.0),
+            None,
+            "zero stays zero"
+        );
+    }
+
+    #[test]
+    fn a_quartic_root_is_found_after_two_turns() {
+        // (t − 0.5)(t − 1.5)(t − 2.5)(t − 3.5) is positive at 0; first root 0.5.
+        let p = Poly::new(&[6.5625, -22.0, 21.5, -8.0, 1.0]);
+        let t = p.first_negative(4.0).expect("a root");
+        assert!((t - 0.5).abs() < 1e-14, "expected 0.5, got {t}");
+    }
+}
