@@ -41,19 +41,30 @@ impl Default for Motion {
 impl Motion {
     /// Advances `ball` by one frame under `effects` (its trail is the caller's business).
     pub fn advance(&self, ball: &mut Ball, effects: &Effects) {
+        let (steps, forces) = self.plan(effects);
+        for _ in 0..steps {
+            self.step(ball, effects, &forces);
+        }
+    }
+
+    /// How many steps a frame takes (the substeps, or more where strong drag needs them) and
+    /// the forces of one step. The same for every ball, so worked out once per frame.
+    pub fn plan(&self, effects: &Effects) -> (u32, Forces) {
         let frame = Forces::new(effects);
         let steps = self.integrator.steps_per_frame(self.substeps, &frame);
-        let forces = frame.split(steps);
-        for _ in 0..steps {
-            let from = [ball.x, ball.y];
-            match (self.collisions, &effects.walls) {
-                (CollisionMode::Exact, Some(walls)) => {
-                    exact::step(self.integrator, ball, &forces, walls);
-                }
-                _ => self.integrator.step(ball, &forces),
+        (steps, frame.split(steps))
+    }
+
+    /// One step of `forces.dt` frames: integrate, then resolve walls and floors.
+    pub fn step(&self, ball: &mut Ball, effects: &Effects, forces: &Forces) {
+        let from = [ball.x, ball.y];
+        match (self.collisions, &effects.walls) {
+            (CollisionMode::Exact, Some(walls)) => {
+                exact::step(self.integrator, ball, forces, walls)
             }
-            // Exact mode leaves the ball inside the walls, where this only resolves floors.
-            effects.clamp_and_reflect(ball, from);
+            _ => self.integrator.step(ball, forces),
         }
+        // Exact mode leaves the ball inside the walls, where this only resolves floors.
+        effects.clamp_and_reflect(ball, from);
     }
 }

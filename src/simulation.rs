@@ -43,8 +43,9 @@ impl Simulation {
         }
     }
 
-    /// Advances every ball by one frame. With ball-ball collisions, every ball moves first,
-    /// then the contacts are resolved, then the trails record where the balls ended up.
+    /// Advances every ball by one frame. With ball-ball collisions, every step (substep) moves
+    /// every ball, then resolves the contacts, so that more substeps also catch faster pairs;
+    /// the trails record where the balls ended the frame.
     pub fn step(&mut self) {
         let Some(collisions) = &mut self.collisions else {
             for ball in &mut self.balls {
@@ -52,14 +53,19 @@ impl Simulation {
             }
             return;
         };
-        for ball in &mut self.balls {
-            self.motion.advance(ball, &self.effects);
-        }
-        collisions.resolve(&mut self.balls);
-        for ball in &mut self.balls {
-            if let Some(walls) = &self.effects.walls {
-                walls.contain(ball);
+        let (steps, forces) = self.motion.plan(&self.effects);
+        for _ in 0..steps {
+            for ball in &mut self.balls {
+                self.motion.step(ball, &self.effects, &forces);
             }
+            collisions.resolve(&mut self.balls);
+            if let Some(walls) = &self.effects.walls {
+                for ball in &mut self.balls {
+                    walls.contain(ball);
+                }
+            }
+        }
+        for ball in &mut self.balls {
             ball.record_trail();
         }
     }

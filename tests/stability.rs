@@ -393,6 +393,44 @@ mod ball_ball {
         deepest
     }
 
+    /// Two balls closing at 10 diameters per frame: with 20 substeps each substep closes one
+    /// diameter, less than the sum of the radii, so the overlap is seen and resolved.
+    #[test]
+    fn a_head_on_pair_at_ten_diameters_per_frame_bounces_back_with_substeps() {
+        let balls = vec![
+            spec(100.0, 120.0, 50.0, 0.0, 5.0),
+            spec(530.0, 120.0, -50.0, 0.0, 5.0),
+        ];
+        let scene = Scene {
+            balls,
+            walls: Some(1.0),
+            ball_collisions: Some(1.0),
+            motion: bouncing_ball::motion::Motion {
+                substeps: 20,
+                ..Default::default()
+            },
+            ..Scene::empty(600, 240)
+        };
+        let mut simulation = Simulation::new(&scene);
+        for frame in 1..=6 {
+            simulation.step();
+            let [a, b] = [&simulation.balls()[0], &simulation.balls()[1]];
+            assert!(
+                a.x < b.x,
+                "frame {frame}: the left ball must stay left of the right one: {} vs {}",
+                a.x,
+                b.x
+            );
+        }
+        let [a, b] = [&simulation.balls()[0], &simulation.balls()[1]];
+        assert!(
+            a.vx < 0.0 && b.vx > 0.0,
+            "they bounced back: vx = {} and {}",
+            a.vx,
+            b.vx
+        );
+    }
+
     #[test]
     fn balls_spawned_at_one_centre_separate_and_never_stick() {
         let balls = (0..20).map(|_| spec(160.0, 120.0, 0.0, 0.0, 6.0)).collect();
