@@ -6,28 +6,9 @@
 
 use std::time::Instant;
 
-use bouncing_ball::ball::Ball;
+use bouncing_ball::collisions::{deepest_overlap, kinetic_energy};
 use bouncing_ball::scene_file;
 use bouncing_ball::simulation::Simulation;
-
-fn kinetic_energy(balls: &[Ball]) -> f64 {
-    balls
-        .iter()
-        .map(|b| 0.5 * b.radius * b.radius * (b.vx * b.vx + b.vy * b.vy))
-        .sum()
-}
-
-/// The deepest overlap between any two balls, as a share of the smaller radius.
-fn deepest_overlap(balls: &[Ball]) -> f64 {
-    let mut deepest = 0.0f64;
-    for (i, a) in balls.iter().enumerate() {
-        for b in &balls[i + 1..] {
-            let overlap = a.radius + b.radius - (a.x - b.x).hypot(a.y - b.y);
-            deepest = deepest.max(overlap / a.radius.min(b.radius));
-        }
-    }
-    deepest
-}
 
 fn main() {
     let frames: u64 = std::env::args()
@@ -45,7 +26,8 @@ fn main() {
         let energy = kinetic_energy(balls);
         lowest = lowest.min(energy);
         highest = highest.max(energy);
-        deepest = deepest.max(deepest_overlap(balls));
+        // Every billiards ball has the same radius.
+        deepest = deepest.max(deepest_overlap(balls) / balls[0].radius);
         non_finite += balls
             .iter()
             .filter(|b| ![b.x, b.y, b.vx, b.vy].iter().all(|v| v.is_finite()))

@@ -2,7 +2,7 @@
 //! grid broad phase against a brute-force search.
 
 use bouncing_ball::ball::Ball;
-use bouncing_ball::collisions::Collisions;
+use bouncing_ball::collisions::{deepest_overlap, kinetic_energy, Collisions};
 use bouncing_ball::grid::Grid;
 use bouncing_ball::walls::Walls;
 use proptest::prelude::*;
@@ -25,26 +25,8 @@ fn momentum(balls: &[Ball]) -> [f64; 2] {
     })
 }
 
-fn kinetic_energy(balls: &[Ball]) -> f64 {
-    balls
-        .iter()
-        .map(|b| 0.5 * mass(b) * (b.vx * b.vx + b.vy * b.vy))
-        .sum()
-}
-
 fn distance(a: &Ball, b: &Ball) -> f64 {
     (b.x - a.x).hypot(b.y - a.y)
-}
-
-/// How far the most overlapping pair overlaps (0 if none does).
-fn deepest_overlap(balls: &[Ball]) -> f64 {
-    let mut deepest = 0.0_f64;
-    for (i, a) in balls.iter().enumerate() {
-        for b in &balls[i + 1..] {
-            deepest = deepest.max(a.radius + b.radius - distance(a, b));
-        }
-    }
-    deepest
 }
 
 /// Moves every ball one frame and keeps it in the box; elastic walls keep the kinetic energy.

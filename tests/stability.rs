@@ -356,7 +356,7 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
 }
 
 mod ball_ball {
-    use bouncing_ball::ball::Ball;
+    use bouncing_ball::collisions::{deepest_overlap, kinetic_energy};
     use bouncing_ball::random::Random;
     use bouncing_ball::simulation::Simulation;
     use bouncing_ball::{BallSpec, Scene};
@@ -372,25 +372,6 @@ mod ball_ball {
             trail_colour: [255, 255, 255],
             trail: 0,
         }
-    }
-
-    fn kinetic_energy(balls: &[Ball]) -> f64 {
-        balls
-            .iter()
-            .map(|b| 0.5 * b.radius * b.radius * (b.vx * b.vx + b.vy * b.vy))
-            .sum()
-    }
-
-    /// The deepest overlap of any pair, as a share of the smaller radius (brute force).
-    fn deepest_overlap(balls: &[Ball]) -> f64 {
-        let mut deepest = 0.0f64;
-        for (i, a) in balls.iter().enumerate() {
-            for b in &balls[i + 1..] {
-                let overlap = a.radius + b.radius - (a.x - b.x).hypot(a.y - b.y);
-                deepest = deepest.max(overlap / a.radius.min(b.radius));
-            }
-        }
-        deepest
     }
 
     /// Two balls closing at 10 diameters per frame: with 20 substeps each substep closes one
@@ -443,7 +424,7 @@ mod ball_ball {
         let mut simulation = Simulation::new(&scene);
         for frame in 1..=500 {
             simulation.step();
-            let overlap = deepest_overlap(simulation.balls());
+            let overlap = deepest_overlap(simulation.balls()) / 6.0;
             assert!(overlap.is_finite(), "frame {frame}: overlap must be finite");
             if frame >= 100 {
                 assert!(overlap < 1e-6, "frame {frame}: separated by frame 100: deepest overlap bound 1e-6 r, got {overlap}");
@@ -506,7 +487,7 @@ mod ball_ball {
             );
             energy = now;
             if frame % 50 == 0 {
-                worst = worst.max(deepest_overlap(balls));
+                worst = worst.max(deepest_overlap(balls) / radius);
             }
         }
         assert!(
