@@ -439,7 +439,7 @@ mod ball_ball {
 
     /// 1,000 balls covering half the box, restitution 0.9, elastic walls, no gravity.
     ///
-    /// Bound on overlap: contacts are resolved once per frame, pair by pair, so a ball pushed
+    /// Bound on overlap: contacts are resolved once per step (here a frame), pair by pair, so a ball pushed
     /// out of one overlap can be pushed into another and keep that depth until the next frame.
     /// The depth of a new overlap is at most the pair's approach in one frame, 2 × max speed
     /// (here 2 × 1 px = 2 px = half a radius); we assert half a radius.
