@@ -43,25 +43,22 @@ impl Simulation {
         }
     }
 
-    /// Advances every ball by one frame. With ball-ball collisions, every step (substep) moves
-    /// every ball, then resolves the contacts, so that more substeps also catch faster pairs;
-    /// the trails record where the balls ended the frame.
+    /// Advances every ball by one frame: each step (substep) moves every ball, then resolves
+    /// ball-ball contacts if the scene has them, so more substeps also catch faster pairs;
+    /// the trails record where the balls ended the frame. The step's forces are worked out
+    /// once per frame, for all balls.
     pub fn step(&mut self) {
-        let Some(collisions) = &mut self.collisions else {
-            for ball in &mut self.balls {
-                ball.step(&self.effects, &self.motion);
-            }
-            return;
-        };
         let (steps, forces) = self.motion.plan(&self.effects);
         for _ in 0..steps {
             for ball in &mut self.balls {
                 self.motion.step(ball, &self.effects, &forces);
             }
-            collisions.resolve(&mut self.balls);
-            if let Some(walls) = &self.effects.walls {
-                for ball in &mut self.balls {
-                    walls.contain(ball);
+            if let Some(collisions) = &mut self.collisions {
+                collisions.resolve(&mut self.balls);
+                if let Some(walls) = &self.effects.walls {
+                    for ball in &mut self.balls {
+                        walls.contain(ball);
+                    }
                 }
             }
         }
