@@ -11,8 +11,7 @@
 use std::f64::consts::PI;
 use std::time::Duration;
 
-use bouncing_ball::random::Random;
-use bouncing_ball::simulation::Simulation;
+use bouncing_ball::scene::random::Random;
 use bouncing_ball::{BallSpec, Scene};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
@@ -70,7 +69,7 @@ fn collisions(c: &mut Criterion) {
         group.bench_function(BenchmarkId::from_parameter(count), |bencher| {
             let scene = scene(count);
             scene.validate().expect("a valid benchmark scene");
-            let mut simulation = Simulation::new(&scene);
+            let mut simulation = scene.simulation();
             bencher.iter(|| simulation.step());
         });
     }

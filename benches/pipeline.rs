@@ -4,11 +4,11 @@
 //! Run: `cargo bench --bench pipeline` (about 15 s; add `-- --warm-up-time 1
 //! --measurement-time 3` for a quicker look).
 
-use bouncing_ball::encode::GifWriter;
-use bouncing_ball::lzw::{min_code_size, Lzw};
+use bouncing_ball::gif::lzw::{min_code_size, Lzw};
+use bouncing_ball::gif::GifWriter;
+use bouncing_ball::physics::simulation::Simulation;
 use bouncing_ball::render::{IndexedFrame, Renderer};
-use bouncing_ball::scene_file;
-use bouncing_ball::simulation::Simulation;
+use bouncing_ball::scene::file as scene_file;
 use bouncing_ball::Scene;
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 
@@ -21,7 +21,7 @@ fn lesson() -> Scene {
 
 /// The simulation after `frames` frames, and the renderer for its scene.
 fn after(scene: &Scene, frames: u32) -> (Simulation, Renderer) {
-    let mut simulation = Simulation::new(scene);
+    let mut simulation = scene.simulation();
     for _ in 0..frames {
         simulation.step();
     }
@@ -31,7 +31,7 @@ fn after(scene: &Scene, frames: u32) -> (Simulation, Renderer) {
 
 /// Simulates, renders and encodes every frame of `scene` into memory; returns the GIF size.
 fn whole_scene(scene: &Scene, renderer: &Renderer) -> usize {
-    let mut simulation = Simulation::new(scene);
+    let mut simulation = scene.simulation();
     let mut frame = renderer.new_frame();
     let mut gif = GifWriter::new(
         Vec::new(),

@@ -1,5 +1,5 @@
 //! What accuracy costs in time: every integrator × substeps × collision mode, measured against
-//! closed-form physics (see `bouncing_ball::accuracy`).
+//! closed-form physics (see `bouncing_ball::physics::accuracy`).
 //!
 //! `cargo run --release --example accuracy` prints the table and the fitted convergence
 //! orders, reproduces the "lost apex" finding, and writes `examples/accuracy.png` (error
@@ -9,11 +9,11 @@ use std::error::Error;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use bouncing_ball::accuracy::{
+use bouncing_ball::physics::accuracy::{
     apex_height, bounces, energy_drift, fitted_order, free_flight_error, Bounce, FLOOR, GRAVITY,
 };
-use bouncing_ball::integrator::Integrator;
-use bouncing_ball::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::integrator::Integrator;
+use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use plotters::prelude::*;
 
 const SUBSTEPS: [u32; 7] = [1, 2, 4, 8, 16, 32, 64];

@@ -10,10 +10,9 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::time::{Duration, Instant};
 
-use bouncing_ball::encode::GifWriter;
-use bouncing_ball::random::Random;
+use bouncing_ball::gif::GifWriter;
 use bouncing_ball::render::Renderer;
-use bouncing_ball::simulation::Simulation;
+use bouncing_ball::scene::random::Random;
 use bouncing_ball::{BallSpec, Scene};
 
 const WIDTH: u32 = 1920;
@@ -88,7 +87,7 @@ fn main() -> std::io::Result<()> {
         renderer.palette(),
         scene.frame_ms,
     )?;
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = scene.simulation();
     let mut frame = renderer.new_frame();
     let (mut physics, mut raster) = (Duration::ZERO, Duration::ZERO);
     for _ in 0..scene.frames {

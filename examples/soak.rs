@@ -6,16 +6,15 @@
 
 use std::time::Instant;
 
-use bouncing_ball::collisions::{deepest_overlap, kinetic_energy};
-use bouncing_ball::scene_file;
-use bouncing_ball::simulation::Simulation;
+use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
+use bouncing_ball::scene::file as scene_file;
 
 fn main() {
     let frames: u64 = std::env::args()
         .nth(1)
         .map_or(10_000_000, |n| n.parse().expect("a frame count"));
     let scene = scene_file::preset("billiards", 1).expect("the billiards preset");
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = scene.simulation();
     let start_energy = kinetic_energy(simulation.balls());
     let (mut lowest, mut highest, mut deepest) = (start_energy, start_energy, 0.0f64);
     let mut non_finite = 0u64;

@@ -8,10 +8,9 @@
 use std::fs::File;
 use std::io::BufWriter;
 
-use bouncing_ball::ball::{Ball, Trail};
-use bouncing_ball::encode::GifWriter;
+use bouncing_ball::gif::GifWriter;
+use bouncing_ball::physics::ball::{Ball, Trail};
 use bouncing_ball::render::Renderer;
-use bouncing_ball::simulation::Simulation;
 use bouncing_ball::{BallSpec, Scene};
 
 const WIDTH: f64 = 320.0; // canvas width, px
@@ -102,7 +101,7 @@ fn main() -> std::io::Result<()> {
         radius: RADIUS,
         trail: Trail::new(TRAIL_LEN),
     };
-    let mut library = Simulation::new(&scene);
+    let mut library = scene.simulation();
     let mut first_difference = None;
     for n in 0..FRAMES {
         yours.step();

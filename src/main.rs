@@ -4,13 +4,12 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use bouncing_ball::integrator::Integrator;
-use bouncing_ball::motion::CollisionMode;
-use bouncing_ball::overrides::Overrides;
-use bouncing_ball::scene_file::{self, preset_names};
+use bouncing_ball::physics::{CollisionMode, Integrator};
+use bouncing_ball::scene::{self, preset_names, Overrides, SceneFileError};
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene};
 use clap::parser::ValueSource;
-use clap::{ArgMatches, CommandFactory, FromArgMatches, Parser};
+use clap::{ArgAction, ArgMatches, CommandFactory, FromArgMatches, Parser, Subcommand};
+use clap_complete::Shell;
 
 // --- Canvas ---
 /// Canvas width, px.
@@ -49,17 +48,27 @@ const BALL_COLOUR: [u8; 3] = [255, 200, 60];
 const TRAIL_COLOUR: [u8; 3] = [60, 140, 255];
 
 /// Simulates a bouncing ball and writes an animated GIF and a still PNG of its last frame.
-///
-/// Without --scene or --preset it runs the lesson's scene (the constants in src/main.rs);
-/// flags typed on the command line override the scene's values (ball flags apply to every ball).
 #[derive(Parser, Debug)]
-#[command(version, about, allow_negative_numbers = true)]
+#[command(
+    version,
+    about,
+    long_about = None,
+    allow_negative_numbers = true,
+    args_conflicts_with_subcommands = true,
+    disable_help_flag = true,
+    disable_help_subcommand = true,
+    after_help = "Without --scene or --preset it runs the lesson's scene (the constants in \
+                  src/main.rs). Flags you type override the scene's values; ball flags apply \
+                  to every ball."
+)]
 struct Args {
+    #[command(subcommand)]
+    command: Option<Command>,
     /// Load the scene from a TOML file
-    #[arg(long, conflicts_with = "preset")]
+    #[arg(short, long, conflicts_with = "preset")]
     scene: Option<PathBuf>,
-    /// Load a bundled scene (see the README's table)
-    #[arg(long, value_parser = preset_names())]
+    /// Load a bundled scene
+    #[arg(short, long, value_parser = preset_names())]
     preset: Option<String>,
     /// Seed for everything random (same seed, same bytes out)
     #[arg(long, default_value_t = 1)]
@@ -86,10 +95,10 @@ struct Args {
     #[arg(long, default_value_t = INITIAL_VEL.1)]
     vy: f64,
     /// Gravity, px/frame² (downwards; negative pulls up)
-    #[arg(long, default_value_t = GRAVITY)]
+    #[arg(short, long, default_value_t = GRAVITY)]
     gravity: f64,
     /// Share of speed kept at each bounce, 0 to 1
-    #[arg(long, default_value_t = BOUNCE_DAMPING)]
+    #[arg(short, long, default_value_t = BOUNCE_DAMPING)]
     damping: f64,
     /// Air drag: share of speed lost per frame, 0 to 1 (the lesson's 0.998 is 0.002) [default: none]
     #[arg(long)]
@@ -110,13 +119,13 @@ struct Args {
     #[arg(long, default_value_t = TRAIL_LEN)]
     trail: usize,
     /// Frames to simulate
-    #[arg(long, default_value_t = FRAMES)]
+    #[arg(short = 'n', long, default_value_t = FRAMES)]
     frames: u32,
     /// Time each frame shows, ms (a multiple of 10)
     #[arg(long, default_value_t = FRAME_MS)]
     frame_ms: u32,
     /// Where to write the animated GIF
-    #[arg(long, default_value = "bouncing_ball.gif")]
+    #[arg(short = 'o', long, default_value = "bouncing_ball.gif")]
     gif: PathBuf,
     /// Where to write the still PNG (the last frame)
     #[arg(long, default_value = "bouncing_ball.png")]
@@ -125,8 +134,20 @@ struct Args {
     #[arg(long)]
     trace: Option<PathBuf>,
     /// Print nothing on success
-    #[arg(long)]
+    #[arg(short, long)]
     quiet: bool,
+    /// Print help
+    #[arg(short, long, action = ArgAction::HelpShort)]
+    help: Option<bool>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Print a shell completion script (e.g. `bouncing_ball completions bash > ~/.bash_completion.d/bouncing_ball`)
+    Completions {
+        /// The shell to complete for
+        shell: Shell,
+    },
 }
 
 /// The lesson's scene, from the constants at the top of this file.
@@ -177,10 +198,10 @@ impl Args {
     }
 
     /// The scene to run: a file, a preset or the lesson's, with the typed flags laid over it.
-    fn scene(&self, matches: &ArgMatches) -> Result<Scene, scene_file::SceneFileError> {
+    fn scene(&self, matches: &ArgMatches) -> Result<Scene, SceneFileError> {
         let mut scene = match (&self.scene, &self.preset) {
-            (Some(path), _) => scene_file::load(path, self.seed)?,
-            (None, Some(name)) => scene_file::preset(name, self.seed)?,
+            (Some(path), _) => scene::file::load(path, self.seed)?,
+            (None, Some(name)) => scene::file::preset(name, self.seed)?,
             (None, None) => lesson_scene(),
         };
         self.overrides(matches).apply(&mut scene);
@@ -200,6 +221,15 @@ fn main() -> ExitCode {
         Ok(args) => args,
         Err(error) => error.exit(),
     };
+    if let Some(Command::Completions { shell }) = args.command {
+        clap_complete::generate(
+            shell,
+            &mut Args::command(),
+            "bouncing_ball",
+            &mut std::io::stdout(),
+        );
+        return ExitCode::SUCCESS;
+    }
     let scene = match args.scene(&matches) {
         Ok(scene) => scene,
         Err(error) => {

@@ -5,13 +5,13 @@ use std::io::{BufWriter, Write};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use crate::encode::{write_png, GifWriter};
+use crate::gif::GifWriter;
 use crate::output::{AtomicFile, OutputError};
-use crate::palette::TooManyColours;
 use crate::progress::Progress;
-use crate::render::Renderer;
+use crate::render::palette::TooManyColours;
+use crate::render::raster::Renderer;
+use crate::render::write_png;
 use crate::scene::{InvalidValue, Scene};
-use crate::simulation::Simulation;
 use crate::trace;
 
 /// Where a run writes.
@@ -84,7 +84,7 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         trace::write_header(out).map_err(OutputError::at(trace_path))?;
     }
 
-    let mut simulation = Simulation::new(scene);
+    let mut simulation = scene.simulation();
     let mut frame = renderer.new_frame();
     let mut progress = Progress::new(scene.frames, outputs.progress);
     for n in 0..scene.frames {

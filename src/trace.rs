@@ -3,7 +3,7 @@
 
 use std::io::{self, Write};
 
-use crate::ball::Ball;
+use crate::physics::ball::Ball;
 
 /// The CSV's first line.
 pub const HEADER: &str = "frame,ball,x,y,vx,vy";

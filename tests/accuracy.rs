@@ -4,15 +4,14 @@
 
 mod common;
 
-use bouncing_ball::accuracy::{
+use bouncing_ball::physics::accuracy::{
     apex_height, bounces, fitted_order, free_flight_error, lesson_effects, FLOOR, GRAVITY, RADIUS,
     WIDTH,
 };
-use bouncing_ball::ball::Ball;
-use bouncing_ball::exact::REST_SPEED;
-use bouncing_ball::integrator::Integrator;
-use bouncing_ball::motion::{CollisionMode, Motion};
-use bouncing_ball::simulation::Simulation;
+use bouncing_ball::physics::ball::Ball;
+use bouncing_ball::physics::exact::REST_SPEED;
+use bouncing_ball::physics::integrator::Integrator;
+use bouncing_ball::physics::motion::{CollisionMode, Motion};
 
 /// Released from rest at y 40: 188 px above the floor's contact line.
 const DROP: f64 = FLOOR - 40.0;
@@ -101,7 +100,7 @@ fn the_lesson_default_still_matches_the_reference_trajectory_bit_for_bit() {
         Motion::default(),
         "the lesson's scene uses the default"
     );
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = scene.simulation();
     let reference = include_str!("data/lesson_trajectory.txt");
     for (frame, line) in reference.lines().enumerate() {
         simulation.step();

@@ -3,10 +3,9 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use bouncing_ball::encode::{queue_frames, GifWriter};
+use bouncing_ball::gif::encoder::{queue_frames, GifWriter};
 use bouncing_ball::render::Renderer;
-use bouncing_ball::scene_file;
-use bouncing_ball::simulation::Simulation;
+use bouncing_ball::scene::file as scene_file;
 
 /// The system allocator, counting every allocation.
 struct Counting;
@@ -38,7 +37,7 @@ fn allocations() -> usize {
 fn drawing_and_encoding_frames_allocate_nothing_once_warmed_up() {
     let scene = scene_file::preset("elastic", 1).unwrap();
     let renderer = Renderer::new(&scene).unwrap();
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = scene.simulation();
     let mut frame = renderer.new_frame();
     let mut gif = GifWriter::new(std::io::sink(), 320, 240, renderer.palette(), 30).unwrap();
     // Warm up for 10 queues' worth of frames, then count over the next 30 (960 frames).

@@ -140,7 +140,7 @@ fn help_lists_every_flag_with_its_unit_and_default() {
         // The flag's block: its line and the description lines up to the next flag.
         let mut block = help
             .lines()
-            .skip_while(|l| !l.trim_start().starts_with(&format!("{flag} ")));
+            .skip_while(|l| !l.contains(&format!("{flag} <")));
         let first = block.next().unwrap_or_default().to_string();
         let line = first
             + &block
@@ -149,6 +149,42 @@ fn help_lists_every_flag_with_its_unit_and_default() {
         assert!(
             line.contains(unit) && line.contains(&format!("[default: {default}]")),
             "{flag}: expected unit {unit:?} and default {default}, help says {line:?}"
+        );
+    }
+}
+
+#[test]
+fn short_and_long_help_agree_and_name_no_code() {
+    let short = run_in(Path::new("."), &["-h"]);
+    let long = run_in(Path::new("."), &["--help"]);
+    assert!(short.status.success() && long.status.success());
+    assert_eq!(
+        String::from_utf8_lossy(&short.stdout),
+        String::from_utf8_lossy(&long.stdout),
+        "-h and --help print different text"
+    );
+    let help = String::from_utf8_lossy(&long.stdout);
+    assert!(!help.contains("crate::"), "help refers to code: {help}");
+}
+
+#[test]
+fn short_flags_work_like_their_long_forms() {
+    let dir = temp_dir();
+    let output = run_in(dir.path(), &["-q", "-n", "3", "-o", "short.gif"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(output.stdout.is_empty(), "-q printed something");
+    assert_eq!(decode_gif(&dir.path().join("short.gif")).frames.len(), 3);
+}
+
+#[test]
+fn completions_print_a_script_for_each_shell() {
+    for shell in ["bash", "zsh", "fish"] {
+        let output = run_in(Path::new("."), &["completions", shell]);
+        assert!(output.status.success(), "{shell}: {}", stderr(&output));
+        let script = String::from_utf8_lossy(&output.stdout);
+        assert!(
+            script.contains("gravity") && script.contains("preset") && script.contains("elastic"),
+            "{shell} completions lack the flags"
         );
     }
 }

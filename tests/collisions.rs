@@ -1,10 +1,10 @@
 //! Ball-ball collisions: the closed-form bounce, conservation laws, no sticking, and the
 //! grid broad phase against a brute-force search.
 
-use bouncing_ball::ball::Ball;
-use bouncing_ball::collisions::{deepest_overlap, kinetic_energy, Collisions};
-use bouncing_ball::grid::Grid;
-use bouncing_ball::walls::Walls;
+use bouncing_ball::physics::ball::Ball;
+use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy, Collisions};
+use bouncing_ball::physics::grid::Grid;
+use bouncing_ball::physics::walls::Walls;
 use proptest::prelude::*;
 
 /// Relative tolerance for "equal to rounding".
@@ -34,7 +34,7 @@ fn move_in_box(balls: &mut [Ball], walls: &Walls) {
     for b in balls.iter_mut() {
         b.x += b.vx;
         b.y += b.vy;
-        walls.bounce(b);
+        b.bounce_off_walls(walls);
     }
 }
 

@@ -5,13 +5,13 @@ mod common;
 
 use std::path::Path;
 
-use bouncing_ball::delta::{changed_rect, Rect};
-use bouncing_ball::encode::{queue_frames, GifWriter, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
-use bouncing_ball::lzw::Lzw;
-use bouncing_ball::palette::Palette;
-use bouncing_ball::random::Random;
+use bouncing_ball::gif::delta::{changed_rect, Rect};
+use bouncing_ball::gif::encoder::{queue_frames, GifWriter, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
+use bouncing_ball::gif::lzw::Lzw;
+use bouncing_ball::render::palette::Palette;
 use bouncing_ball::render::IndexedFrame;
 use bouncing_ball::render::Renderer;
+use bouncing_ball::scene::random::Random;
 use bouncing_ball::{run, BallSpec, Outputs, Scene};
 use common::{decode_gif, lesson_scene, render_frames};
 use image::Luma;

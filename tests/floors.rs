@@ -1,10 +1,10 @@
 //! Floors (sloped segments): clamp along the normal, reflect the normal component with
 //! damping, keep the tangential one; no tunnelling; end points bounce like points.
 
-use bouncing_ball::ball::Ball;
-use bouncing_ball::effects::Effects;
-use bouncing_ball::floor::Floor;
-use bouncing_ball::motion::Motion;
+use bouncing_ball::physics::ball::Ball;
+use bouncing_ball::physics::effects::Effects;
+use bouncing_ball::physics::floor::Floor;
+use bouncing_ball::physics::motion::Motion;
 
 fn floor_only(floor: Floor, gravity: Option<[f64; 2]>) -> Effects {
     Effects {
@@ -32,7 +32,7 @@ fn a_ball_ten_diameters_per_frame_does_not_tunnel_through_a_floor() {
     let mut ball = Ball::new(150.0, 100.0, 0.0, 100.0, 5.0, 0); // 100 px/frame = 10 diameters
     let effects = floor_only(floor, None);
     for frame in 0..20 {
-        ball.step(&effects, &Motion::default());
+        Motion::default().advance(&mut ball, &effects);
         assert!(
             ball.y <= 200.0 - 5.0 + 1e-9,
             "frame {frame}: the ball must stay above the floor: expected y <= 195, got {}",
@@ -55,7 +55,7 @@ fn a_bounce_flips_the_normal_speed_with_damping_and_keeps_the_tangential_speed()
         damping: 0.5,
     };
     let mut ball = Ball::new(100.0, 80.0, 0.0, 20.0, 5.0, 0);
-    ball.step(&floor_only(floor, None), &Motion::default());
+    Motion::default().advance(&mut ball, &floor_only(floor, None));
     // Normal n = (-1, -1)/√2 (up-left), tangent t = (-1, 1)/√2.
     let s = std::f64::consts::FRAC_1_SQRT_2;
     let normal_speed = -(ball.vx + ball.vy) * s;
@@ -88,7 +88,7 @@ fn a_ball_resting_on_a_slope_does_not_sink_into_it() {
     let effects = floor_only(floor, Some([0.0, 0.5]));
     let mut lowest = f64::INFINITY;
     for _ in 0..200 {
-        ball.step(&effects, &Motion::default());
+        Motion::default().advance(&mut ball, &effects);
         if (0.0..320.0).contains(&ball.x) {
             lowest = lowest.min(height_above(&floor, &ball).abs());
         }
@@ -108,7 +108,7 @@ fn a_ball_hitting_an_end_point_bounces_off_it_as_off_a_point() {
         damping: 1.0,
     };
     let mut ball = Ball::new(104.0, 80.0, 0.0, 14.0, 10.0, 0);
-    ball.step(&floor_only(floor, None), &Motion::default());
+    Motion::default().advance(&mut ball, &floor_only(floor, None));
     let distance = (ball.x - 100.0).hypot(ball.y - 100.0);
     assert!(
         (distance - 10.0).abs() < 1e-9,

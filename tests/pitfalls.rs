@@ -2,23 +2,19 @@
 
 mod common;
 
-use bouncing_ball::ball::Ball;
-use bouncing_ball::effects::Effects;
-use bouncing_ball::motion::Motion;
+use bouncing_ball::physics::ball::Ball;
+use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::render::{to_rgb, Renderer};
-use bouncing_ball::simulation::Simulation;
-use bouncing_ball::walls::Walls;
 use common::lesson_scene;
 
-fn lesson_effects(damping: f64) -> Effects {
-    Effects {
-        gravity: Some([0.0, 0.5]),
-        walls: Some(Walls {
-            width: 320.0,
-            height: 240.0,
-            damping,
-        }),
-        ..Effects::default()
+/// The lesson's gravity, px/frame².
+const GRAVITY: f64 = 0.5;
+
+fn lesson_walls(damping: f64) -> Walls {
+    Walls {
+        width: 320.0,
+        height: 240.0,
+        damping,
     }
 }
 
@@ -26,7 +22,7 @@ fn lesson_effects(damping: f64) -> Effects {
 fn position_is_clamped_in_the_same_frame_as_the_reflection() {
     // Falling at 30 px/frame from 10 px above the floor's contact line: the step overshoots by 20.5 px.
     let mut ball = Ball::new(100.0, 218.0, 0.0, 30.0, 12.0, 20);
-    ball.step(&lesson_effects(0.88), &Motion::default());
+    ball.step(GRAVITY, &lesson_walls(0.88));
     let expected_y = 240.0 - 12.0;
     let expected_vy = -(30.0 + 0.5) * 0.88;
     assert_eq!(
@@ -40,7 +36,7 @@ fn position_is_clamped_in_the_same_frame_as_the_reflection() {
         ball.vy
     );
     // And the next frame moves it up, away from the wall: no second flip, no jitter.
-    ball.step(&lesson_effects(0.88), &Motion::default());
+    ball.step(GRAVITY, &lesson_walls(0.88));
     assert!(
         ball.y < expected_y,
         "the frame after a bounce must leave the wall: y = {}",
@@ -52,7 +48,7 @@ fn position_is_clamped_in_the_same_frame_as_the_reflection() {
 fn gravity_is_added_once_per_frame_not_again_at_a_bounce() {
     // Elastic bounce: the rebound speed is exactly the impact speed, which had one frame of gravity.
     let mut ball = Ball::new(100.0, 220.0, 0.0, 10.0, 12.0, 0);
-    ball.step(&lesson_effects(1.0), &Motion::default());
+    ball.step(GRAVITY, &lesson_walls(1.0));
     let expected_vy = -(10.0 + 0.5);
     assert_eq!(
         ball.vy, expected_vy,
@@ -62,7 +58,7 @@ fn gravity_is_added_once_per_frame_not_again_at_a_bounce() {
     // In free flight, each frame adds exactly g.
     let mut ball = Ball::new(100.0, 100.0, 0.0, 0.0, 12.0, 0);
     for frame in 1..=10 {
-        ball.step(&lesson_effects(1.0), &Motion::default());
+        ball.step(GRAVITY, &lesson_walls(1.0));
         let expected = 0.5 * f64::from(frame);
         assert_eq!(
             ball.vy, expected,
@@ -76,7 +72,7 @@ fn gravity_is_added_once_per_frame_not_again_at_a_bounce() {
 fn trail_never_grows_longer_than_trail_len() {
     let mut ball = Ball::new(40.0, 40.0, 5.2, 0.0, 12.0, 20);
     for frame in 1..=1000 {
-        ball.step(&lesson_effects(0.88), &Motion::default());
+        ball.step(GRAVITY, &lesson_walls(0.88));
         let expected = frame.min(20);
         assert_eq!(
             ball.trail.len(),
@@ -99,7 +95,7 @@ fn trail_is_drawn_under_the_ball() {
     let mut scene = lesson_scene();
     scene.balls[0].vx = 1.0;
     let renderer = Renderer::new(&scene).unwrap();
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = scene.simulation();
     let mut frame = renderer.new_frame();
     for n in 0..60 {
         simulation.step();
@@ -120,12 +116,8 @@ fn trail_is_drawn_under_the_ball() {
 fn sub_pixel_motion_is_kept() {
     // Integer positions would round 0.1 px/frame away and freeze the ball.
     let mut ball = Ball::new(100.0, 100.0, 0.1, 0.0, 12.0, 0);
-    let effects = Effects {
-        gravity: None,
-        ..lesson_effects(1.0)
-    };
     for _ in 0..10 {
-        ball.step(&effects, &Motion::default());
+        ball.step(0.0, &lesson_walls(1.0));
     }
     let moved = ball.x - 100.0;
     assert!(

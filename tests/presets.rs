@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use bouncing_ball::scene_file::{self, PRESETS};
+use bouncing_ball::scene::file::{self as scene_file, PRESETS};
 use bouncing_ball::{run, Outputs};
 
 #[test]

@@ -2,10 +2,10 @@
 //! floors, integrator, substeps and collision mode, the state stays finite, every ball stays
 //! in its box, energy obeys its bound, and two runs give the same bits.
 
-use bouncing_ball::floor::Floor;
-use bouncing_ball::integrator::Integrator;
-use bouncing_ball::motion::{CollisionMode, Motion};
-use bouncing_ball::simulation::Simulation;
+use bouncing_ball::physics::floor::Floor;
+use bouncing_ball::physics::integrator::Integrator;
+use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::simulation::Simulation;
 use bouncing_ball::{BallSpec, Scene};
 use clap::ValueEnum;
 use proptest::prelude::*;
@@ -107,7 +107,7 @@ proptest! {
 
     #[test]
     fn every_ball_stays_finite_and_inside_its_box(scene in scene(true)) {
-        let mut simulation = Simulation::new(&scene);
+        let mut simulation = scene.simulation();
         let (w, h) = (f64::from(scene.width), f64::from(scene.height));
         for frame in 0..scene.frames {
             simulation.step();
@@ -133,7 +133,7 @@ proptest! {
         let scene = Scene { motion: Motion { collisions: CollisionMode::Clamp, ..scene.motion }, ball_collisions: None, ..scene };
         let gravity = scene.gravity.unwrap_or([0.0, 0.0]);
         let g = gravity[0].hypot(gravity[1]);
-        let mut simulation = Simulation::new(&scene);
+        let mut simulation = scene.simulation();
         let mut before = energy(&simulation, gravity);
         for frame in 0..scene.frames {
             let allowance: f64 = simulation.balls().iter().map(|b| b.radius * b.radius * g * (b.vx.hypot(b.vy) + g)).sum();
@@ -154,7 +154,7 @@ proptest! {
         let motion = Motion { integrator, collisions: CollisionMode::Exact, ..scene.motion };
         let scene = Scene { motion, drag: None, ball_collisions: None, ..scene };
         let gravity = scene.gravity.unwrap_or([0.0, 0.0]);
-        let mut simulation = Simulation::new(&scene);
+        let mut simulation = scene.simulation();
         let mut before = energy(&simulation, gravity);
         let scale: f64 = simulation.balls().iter().map(|b| b.radius * b.radius * (b.vx.hypot(b.vy).powi(2) + 1.0 + gravity[0].hypot(gravity[1]) * 600.0)).sum();
         for frame in 0..scene.frames {
@@ -167,7 +167,7 @@ proptest! {
 
     #[test]
     fn the_same_scene_gives_the_same_bits_twice(scene in scene(true)) {
-        let (mut a, mut b) = (Simulation::new(&scene), Simulation::new(&scene));
+        let (mut a, mut b) = (scene.simulation(), scene.simulation());
         for _ in 0..scene.frames {
             a.step();
             b.step();

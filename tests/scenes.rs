@@ -3,12 +3,11 @@
 
 mod common;
 
-use bouncing_ball::overrides::Overrides;
-use bouncing_ball::palette::{shade, MAX_COLOURS};
+use bouncing_ball::physics::work::{self, Work};
+use bouncing_ball::render::palette::{shade, MAX_COLOURS};
 use bouncing_ball::render::Renderer;
-use bouncing_ball::scene_file::{self, SceneFileError, PRESETS};
-use bouncing_ball::simulation::Simulation;
-use bouncing_ball::work::{self, Work};
+use bouncing_ball::scene::file::{self as scene_file, SceneFileError, PRESETS};
+use bouncing_ball::scene::overrides::Overrides;
 use bouncing_ball::{BallSpec, Scene};
 use common::lesson_scene;
 
@@ -97,7 +96,7 @@ fn a_zero_gravity_or_drag_override_removes_the_effect() {
 
 /// Steps `scene` for `frames` and returns the counted work.
 fn work_done(scene: &Scene, frames: u32) -> [u64; 5] {
-    let mut simulation = Simulation::new(scene);
+    let mut simulation = scene.simulation();
     work::reset();
     for _ in 0..frames {
         simulation.step();
@@ -139,7 +138,7 @@ fn a_scene_without_ball_collisions_never_builds_the_grid() {
     // The grid lives inside `Collisions`, which exists only when the scene asks for it.
     for (name, _) in PRESETS {
         let scene = scene_file::preset(name, 1).unwrap();
-        let simulation = Simulation::new(&scene);
+        let simulation = scene.simulation();
         assert_eq!(
             simulation.has_ball_collisions(),
             scene.ball_collisions.is_some(),

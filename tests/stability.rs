@@ -2,12 +2,12 @@
 //! fast balls, corners, resting contact, long elastic runs, extreme magnitudes and drag.
 //! Also slopes and ball-ball contacts. (Zeno's bounces ending in rest are in `tests/accuracy.rs`.)
 
-use bouncing_ball::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
-use bouncing_ball::ball::Ball;
-use bouncing_ball::effects::Effects;
-use bouncing_ball::integrator::Integrator;
-use bouncing_ball::motion::{CollisionMode, Motion};
-use bouncing_ball::walls::Walls;
+use bouncing_ball::physics::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
+use bouncing_ball::physics::ball::Ball;
+use bouncing_ball::physics::effects::Effects;
+use bouncing_ball::physics::integrator::Integrator;
+use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::walls::Walls;
 
 const INTEGRATORS: [Integrator; 4] = [
     Integrator::ExplicitEuler,
@@ -319,7 +319,7 @@ fn drag_without_gravity_slows_the_ball_as_the_closed_form_says() {
 
 #[test]
 fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink() {
-    use bouncing_ball::floor::Floor;
+    use bouncing_ball::physics::floor::Floor;
     // A 60° slope from the top wall to the bottom wall, so no ball can go around its ends;
     // balls thrown at it at up to 30 diameters per frame.
     let slope = Floor {
@@ -339,7 +339,7 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
         let mut ball = Ball::new(60.0, 150.0, vx, vy, 5.0, 0);
         let start_side = side(&ball).signum();
         for frame in 1..=2000 {
-            ball.step(&effects, &Motion::default());
+            Motion::default().advance(&mut ball, &effects);
             let distance = side(&ball) * start_side;
             // Within the segment's extent the centre keeps at least a radius on its side.
             assert!(
@@ -356,9 +356,8 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
 }
 
 mod ball_ball {
-    use bouncing_ball::collisions::{deepest_overlap, kinetic_energy};
-    use bouncing_ball::random::Random;
-    use bouncing_ball::simulation::Simulation;
+    use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
+    use bouncing_ball::scene::random::Random;
     use bouncing_ball::{BallSpec, Scene};
 
     fn spec(x: f64, y: f64, vx: f64, vy: f64, radius: f64) -> BallSpec {
@@ -386,13 +385,13 @@ mod ball_ball {
             balls,
             walls: Some(1.0),
             ball_collisions: Some(1.0),
-            motion: bouncing_ball::motion::Motion {
+            motion: bouncing_ball::physics::motion::Motion {
                 substeps: 20,
                 ..Default::default()
             },
             ..Scene::empty(600, 240)
         };
-        let mut simulation = Simulation::new(&scene);
+        let mut simulation = scene.simulation();
         for frame in 1..=6 {
             simulation.step();
             let [a, b] = [&simulation.balls()[0], &simulation.balls()[1]];
@@ -421,7 +420,7 @@ mod ball_ball {
             ball_collisions: Some(0.9),
             ..Scene::empty(320, 240)
         };
-        let mut simulation = Simulation::new(&scene);
+        let mut simulation = scene.simulation();
         for frame in 1..=500 {
             simulation.step();
             let overlap = deepest_overlap(simulation.balls()) / 6.0;
@@ -468,7 +467,7 @@ mod ball_ball {
             ..Scene::empty(side_px as u32, side_px as u32)
         };
         scene.validate().expect("a valid packed scene");
-        let mut simulation = Simulation::new(&scene);
+        let mut simulation = scene.simulation();
         let mut energy = kinetic_energy(simulation.balls());
         let mut worst = 0.0f64;
         for frame in 1..=10_000 {

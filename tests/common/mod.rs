@@ -5,7 +5,6 @@
 use std::path::{Path, PathBuf};
 
 use bouncing_ball::render::{to_rgb, Renderer};
-use bouncing_ball::simulation::Simulation;
 use bouncing_ball::{BallSpec, Scene};
 use image::RgbImage;
 
@@ -34,7 +33,7 @@ pub fn lesson_scene() -> Scene {
 /// Every frame of `scene` as RGB, rendered by the library.
 pub fn render_frames(scene: &Scene) -> Vec<RgbImage> {
     let renderer = Renderer::new(scene).expect("scene colours fit a GIF");
-    let mut simulation = Simulation::new(scene);
+    let mut simulation = scene.simulation();
     let mut frame = renderer.new_frame();
     (0..scene.frames)
         .map(|_| {

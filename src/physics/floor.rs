@@ -3,7 +3,7 @@
 //! The reflection is the walls' idea in 2D: clamp the ball back along the segment's normal,
 //! flip the normal component of its velocity with damping, keep the tangential one.
 
-use crate::ball::Ball;
+use super::ball::Ball;
 
 /// A line segment from `from` to `to` (px) and the share of normal speed a bounce keeps.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -9,7 +9,7 @@
 
 use std::ops::Range;
 
-use crate::ball::Ball;
+use super::ball::Ball;
 
 /// The grid never has more than about this many cells per ball: when balls are spread thin
 /// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).

@@ -8,9 +8,9 @@
 //! Pairs are found by the [`Grid`] broad phase and resolved one after another, in the grid's
 //! order, so the same balls always give the same bytes.
 
-use crate::ball::Ball;
-use crate::grid::Grid;
-use crate::work::{tally, Work};
+use super::ball::Ball;
+use super::grid::Grid;
+use super::work::{tally, Work};
 
 /// The golden angle, radians: successive multiples of it spread evenly round a circle.
 const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;

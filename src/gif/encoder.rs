@@ -1,8 +1,7 @@
-//! Image files from indexed frames: the animated GIF and the still PNG. Knows frames and
-//! palettes, nothing of balls.
+//! The animated GIF from indexed frames. Knows frames and palettes, nothing of balls.
 //!
 //! The GIF is written for size and speed without losing a pixel. After the first frame,
-//! each frame is only the rectangle that changed ([`crate::delta`]), laid over the last one
+//! each frame is only the rectangle that changed ([`super::delta`]), laid over the last one
 //! (disposal Keep). Frames wait in a queue of bounded size; a full queue is compressed on
 //! every core at once (rayon) and written in order, so memory stays flat however many
 //! frames a run has, and the queue's buffers serve the whole run.
@@ -11,13 +10,12 @@ use std::borrow::Cow;
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
-use image::ImageEncoder;
 use rayon::prelude::*;
 
-use crate::delta::{changed_rect, crop, paste, Rect};
-use crate::lzw::{min_code_size, Lzw};
-use crate::palette::Palette;
-use crate::render::{to_rgb, IndexedFrame};
+use super::delta::{changed_rect, crop, paste, Rect};
+use super::lzw::{min_code_size, Lzw};
+use crate::render::palette::Palette;
+use crate::render::IndexedFrame;
 
 /// The most pixels the queue holds (unless a single frame is bigger): what bounds memory.
 pub const QUEUE_PIXELS: usize = 4 << 20;
@@ -202,17 +200,4 @@ impl<W: Write> GifWriter<W> {
         self.flush()?;
         self.encoder.into_inner().map_err(gif_error)
     }
-}
-
-/// Writes `frame` as an RGB PNG.
-pub fn write_png(out: impl Write, frame: &IndexedFrame, palette: &Palette) -> io::Result<()> {
-    let rgb = to_rgb(frame, palette);
-    image::codecs::png::PngEncoder::new(out)
-        .write_image(
-            rgb.as_raw(),
-            rgb.width(),
-            rgb.height(),
-            image::ExtendedColorType::Rgb8,
-        )
-        .map_err(io::Error::other)
 }

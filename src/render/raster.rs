@@ -6,10 +6,10 @@
 use image::{GrayImage, Luma};
 use imageproc::drawing::{draw_filled_circle_mut, draw_line_segment_mut};
 
-use crate::ball::Ball;
-use crate::floor::Floor;
-use crate::palette::{fade, fade_levels, quantised_fade, shade, Palette, TooManyColours};
-use crate::scene::Scene;
+use super::palette::{fade, fade_levels, quantised_fade, shade, Palette, TooManyColours};
+use crate::physics::ball::Ball;
+use crate::physics::floor::Floor;
+use crate::scene::spec::Scene;
 
 /// A frame as palette indices, one byte per pixel.
 pub type IndexedFrame = GrayImage;

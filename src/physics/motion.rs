@@ -2,10 +2,10 @@
 //! and floors are resolved. The default is the lesson's: one semi-implicit Euler step per
 //! frame, then clamp-then-reflect.
 
-use crate::ball::Ball;
-use crate::effects::Effects;
-use crate::exact;
-use crate::integrator::{Forces, Integrator};
+use super::ball::Ball;
+use super::effects::Effects;
+use super::exact;
+use super::integrator::{Forces, Integrator};
 
 /// How a ball's contact with a wall or floor is resolved.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
@@ -14,8 +14,8 @@ pub enum CollisionMode {
     /// The lesson's: after the step, clamp the ball back to the wall and reflect its velocity.
     #[default]
     Clamp,
-    /// Bounce off the walls at the moment of impact within the step (see `crate::exact`);
-    /// floors are still clamped after the step.
+    /// Bounce off the walls at the moment of impact within the step; floors are still
+    /// clamped after the step.
     Exact,
 }
 

@@ -4,10 +4,10 @@
 //!
 //! Every experiment runs in the lesson's box (320 × 240 px, radius 12, gravity 0.5 px/frame²).
 
-use crate::ball::Ball;
-use crate::effects::Effects;
-use crate::motion::Motion;
-use crate::walls::Walls;
+use super::ball::Ball;
+use super::effects::Effects;
+use super::motion::Motion;
+use super::walls::Walls;
 
 /// The lesson's canvas, px.
 pub const WIDTH: f64 = 320.0;

@@ -9,7 +9,7 @@
 use std::collections::HashMap;
 use std::fmt;
 
-use crate::scene::Rgb;
+use crate::scene::spec::Rgb;
 
 /// How many colours a GIF colour table holds.
 pub const MAX_COLOURS: usize = 256;

@@ -1,11 +1,9 @@
 //! A scene in motion: the balls and the effects acting on them, advanced one frame at a time.
 
-use crate::ball::Ball;
-use crate::collisions::Collisions;
-use crate::effects::Effects;
-use crate::motion::Motion;
-use crate::scene::Scene;
-use crate::walls::Walls;
+use super::ball::Ball;
+use super::collisions::Collisions;
+use super::effects::Effects;
+use super::motion::Motion;
 
 /// The moving state of a scene.
 #[derive(Clone, Debug)]
@@ -18,28 +16,19 @@ pub struct Simulation {
 }
 
 impl Simulation {
-    /// Puts every ball of a (validated) scene at its start.
-    pub fn new(scene: &Scene) -> Simulation {
-        let balls = scene
-            .balls
-            .iter()
-            .map(|b| Ball::new(b.x, b.y, b.vx, b.vy, b.radius, b.trail))
-            .collect();
-        let effects = Effects {
-            gravity: scene.gravity,
-            drag: scene.drag,
-            walls: scene.walls.map(|damping| Walls {
-                width: f64::from(scene.width),
-                height: f64::from(scene.height),
-                damping,
-            }),
-            floors: scene.floors.clone(),
-        };
+    /// A simulation of `balls` under `effects`, moved by `motion`; `restitution` turns on
+    /// ball-ball collisions (and so the broad-phase grid).
+    pub fn new(
+        balls: Vec<Ball>,
+        effects: Effects,
+        motion: Motion,
+        restitution: Option<f64>,
+    ) -> Simulation {
         Simulation {
             balls,
             effects,
-            motion: scene.motion,
-            collisions: scene.ball_collisions.map(Collisions::new),
+            motion,
+            collisions: restitution.map(Collisions::new),
         }
     }
 
@@ -57,7 +46,7 @@ impl Simulation {
                 collisions.resolve(&mut self.balls);
                 if let Some(walls) = &self.effects.walls {
                     for ball in &mut self.balls {
-                        walls.contain(ball);
+                        ball.keep_inside(walls);
                     }
                 }
             }

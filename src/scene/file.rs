@@ -5,23 +5,23 @@ use std::path::Path;
 
 use serde::Deserialize;
 
-use crate::floor::Floor;
-use crate::integrator::Integrator;
-use crate::motion::{CollisionMode, Motion};
-use crate::random::Random;
-use crate::scene::{BallSpec, InvalidValue, Rgb, Scene, MAX_BALLS};
+use super::random::Random;
+use super::spec::{BallSpec, InvalidValue, Rgb, Scene, MAX_BALLS};
+use crate::physics::floor::Floor;
+use crate::physics::integrator::Integrator;
+use crate::physics::motion::{CollisionMode, Motion};
 
 /// The bundled presets: name and TOML text, one per lesson exercise.
 pub const PRESETS: &[(&str, &str)] = &[
-    ("lesson", include_str!("../scenes/lesson.toml")),
-    ("elastic", include_str!("../scenes/elastic.toml")),
-    ("no-gravity", include_str!("../scenes/no-gravity.toml")),
-    ("heavy", include_str!("../scenes/heavy.toml")),
-    ("moon", include_str!("../scenes/moon.toml")),
-    ("many", include_str!("../scenes/many.toml")),
-    ("billiards", include_str!("../scenes/billiards.toml")),
-    ("slope", include_str!("../scenes/slope.toml")),
-    ("drag", include_str!("../scenes/drag.toml")),
+    ("lesson", include_str!("../../scenes/lesson.toml")),
+    ("elastic", include_str!("../../scenes/elastic.toml")),
+    ("no-gravity", include_str!("../../scenes/no-gravity.toml")),
+    ("heavy", include_str!("../../scenes/heavy.toml")),
+    ("moon", include_str!("../../scenes/moon.toml")),
+    ("many", include_str!("../../scenes/many.toml")),
+    ("billiards", include_str!("../../scenes/billiards.toml")),
+    ("slope", include_str!("../../scenes/slope.toml")),
+    ("drag", include_str!("../../scenes/drag.toml")),
 ];
 
 /// The lesson's colours, used where a file names none.

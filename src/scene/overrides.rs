@@ -1,8 +1,8 @@
 //! Values typed on the command line that replace a scene's own (`--preset moon --damping 1`).
 
-use crate::integrator::Integrator;
-use crate::motion::CollisionMode;
-use crate::scene::Scene;
+use super::spec::Scene;
+use crate::physics::integrator::Integrator;
+use crate::physics::motion::CollisionMode;
 
 /// Each `Some` replaces the scene's value; ball values apply to every ball.
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -1,8 +1,9 @@
 //! The physics a scene calls for. Every effect is optional: an absent one is never computed.
 
-use crate::floor::Floor;
-use crate::walls::Walls;
-use crate::work::{tally, Work};
+use super::ball::Ball;
+use super::floor::Floor;
+use super::walls::Walls;
+use super::work::{tally, Work};
 
 /// The forces and boundaries that act on every ball, each present only if the scene names it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -21,7 +22,7 @@ impl Effects {
     /// The lesson's collision response: clamp-then-reflect against the box, then against
     /// every floor (swept from `from`), then the box again in case a floor pushed the ball
     /// out. Box first, so a fast ball cannot slip round a floor's end through the wall.
-    pub fn clamp_and_reflect(&self, ball: &mut crate::ball::Ball, from: [f64; 2]) {
+    pub fn clamp_and_reflect(&self, ball: &mut Ball, from: [f64; 2]) {
         self.bounce_off_walls(ball);
         if !self.floors.is_empty() {
             for floor in &self.floors {
@@ -32,10 +33,10 @@ impl Effects {
         }
     }
 
-    fn bounce_off_walls(&self, ball: &mut crate::ball::Ball) {
+    fn bounce_off_walls(&self, ball: &mut Ball) {
         if let Some(walls) = &self.walls {
             tally(Work::Walls);
-            walls.bounce(ball);
+            ball.bounce_off_walls(walls);
         }
     }
 }

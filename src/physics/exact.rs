@@ -16,10 +16,10 @@
 //!
 //! Floors are not handled here: in exact mode they keep the lesson's clamp-then-reflect.
 
-use crate::ball::Ball;
-use crate::integrator::{Forces, Integrator};
-use crate::poly::Poly;
-use crate::walls::Walls;
+use super::ball::Ball;
+use super::integrator::{Forces, Integrator};
+use super::poly::Poly;
+use super::walls::Walls;
 
 /// Rebound speed below which a bounce ends in rest, px/frame.
 ///
@@ -45,7 +45,7 @@ struct Side {
 }
 
 impl Side {
-    /// The four walls for `ball`, with the same contact coordinates as `Walls::bounce`.
+    /// The four walls for `ball`, with the same contact coordinates as `Ball::bounce_off_walls`.
     fn all(walls: &Walls, ball: &Ball) -> [Side; 4] {
         let r = ball.radius;
         [
@@ -104,7 +104,7 @@ fn velocity(ball: &Ball) -> [f64; 2] {
 pub fn step(integrator: Integrator, ball: &mut Ball, forces: &Forces, walls: &Walls) {
     // A ball that starts the step inside a wall (spawned there, or left there by a capped
     // step) is put back first, so every distance below starts at zero or more.
-    walls.bounce(ball);
+    ball.bounce_off_walls(walls);
     let sides = Side::all(walls, ball);
     // Resting can only begin or end at a bounce, so these forces hold until the next one.
     let mut flight = supported(ball, forces, &sides);
@@ -128,7 +128,7 @@ pub fn step(integrator: Integrator, ball: &mut Ball, forces: &Forces, walls: &Wa
     }
     if left > 0.0 {
         integrator.fly(ball, &flight, left);
-        walls.bounce(ball);
+        ball.bounce_off_walls(walls);
         flight = supported(ball, forces, &sides);
     }
     integrator.kick_after(ball, &flight);

@@ -5,8 +5,12 @@
 
 use std::fmt;
 
-use crate::floor::Floor;
-use crate::motion::Motion;
+use crate::physics::ball::Ball;
+use crate::physics::effects::Effects;
+use crate::physics::floor::Floor;
+use crate::physics::motion::Motion;
+use crate::physics::simulation::Simulation;
+use crate::physics::walls::Walls;
 
 /// A colour as red, green, blue.
 pub type Rgb = [u8; 3];
@@ -133,6 +137,26 @@ impl Scene {
             frames: 1,
             frame_ms: 30,
         }
+    }
+
+    /// The scene set in motion: every ball at its start, under the effects the scene names.
+    pub fn simulation(&self) -> Simulation {
+        let balls = self
+            .balls
+            .iter()
+            .map(|b| Ball::new(b.x, b.y, b.vx, b.vy, b.radius, b.trail))
+            .collect();
+        let effects = Effects {
+            gravity: self.gravity,
+            drag: self.drag,
+            walls: self.walls.map(|damping| Walls {
+                width: f64::from(self.width),
+                height: f64::from(self.height),
+                damping,
+            }),
+            floors: self.floors.clone(),
+        };
+        Simulation::new(balls, effects, self.motion, self.ball_collisions)
     }
 
     /// Checks every value, so the simulation and the encoder never see one they cannot handle.

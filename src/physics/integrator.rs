@@ -5,15 +5,15 @@
 //! differential equation that drag is `dv/dt = g − λ·v` with `λ = −ln(1 − drag)` per frame:
 //! over one frame it keeps exactly `e^(−λ) = 1 − drag` of the speed, as the lesson does.
 //!
-//! Every step is written as three parts, so that exact collisions (`crate::exact`) can stop
+//! Every step is written as three parts, so that exact collisions (`super::exact`) can stop
 //! the ball in the middle of it: a velocity change before the flight (a *kick*), the flight,
 //! a kick after. The Euler methods put all of gravity and drag into one kick and fly in a
 //! straight line; velocity Verlet and RK4 have no kicks and fly along a curve.
 
-use crate::ball::Ball;
-use crate::effects::Effects;
-use crate::poly::Poly;
-use crate::work::{tally, Work};
+use super::ball::Ball;
+use super::effects::Effects;
+use super::poly::Poly;
+use super::work::{tally, Work};
 
 /// Which integration method advances the balls.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
@@ -81,7 +81,7 @@ impl Forces {
         }
     }
 
-    /// Counts this step's gravity and drag work (debug builds; see `crate::work`).
+    /// Counts this step's gravity and drag work (debug builds; see `super::work`).
     fn tally(&self) {
         if self.gravity.is_some() {
             tally(Work::Gravity);

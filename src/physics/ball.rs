@@ -1,0 +1,123 @@
+//! The ball: its state, the lesson's `step()` and its bounded trail.
+//!
+//! `Ball::step` is the lesson's loop, line for line: gravity changes the velocity, the velocity
+//! moves the ball, the four walls clamp then reflect, the new position joins the trail. The
+//! general solver (integrators, substeps, exact collisions, floors, ball-ball contacts) lives
+//! beside it in `motion` and `simulation`, and with the default settings gives the same numbers.
+
+use std::collections::VecDeque;
+
+use super::walls::Walls;
+
+/// One ball, in the lesson's units: pixels and frames.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ball {
+    /// Centre, px (x grows rightwards, y grows downwards).
+    pub x: f64,
+    pub y: f64,
+    /// Velocity, px/frame.
+    pub vx: f64,
+    pub vy: f64,
+    /// Radius, px.
+    pub radius: f64,
+    /// The last positions, oldest first.
+    pub trail: Trail,
+}
+
+impl Ball {
+    /// A ball at `(x, y)` moving at `(vx, vy)` with an empty trail of at most `trail_len` points.
+    pub fn new(x: f64, y: f64, vx: f64, vy: f64, radius: f64, trail_len: usize) -> Ball {
+        Ball {
+            x,
+            y,
+            vx,
+            vy,
+            radius,
+            trail: Trail::new(trail_len),
+        }
+    }
+
+    /// One frame of the lesson: `gravity` in px/frame², pulling down.
+    pub fn step(&mut self, gravity: f64, walls: &Walls) {
+        self.vy += gravity; // 1. constant force → velocity change
+        self.x += self.vx; // 2. velocity → position change
+        self.y += self.vy;
+        self.bounce_off_walls(walls); // 3. collision: clamp, then reflect
+        self.record_trail(); // after the move, so the trail ends where the ball is
+    }
+
+    /// The lesson's collision response: clamp the ball back inside the box, then reflect the
+    /// velocity component normal to the wall it crossed, losing some energy. Clamping first
+    /// means the ball ends the frame touching the wall, never inside it, so the next frame
+    /// cannot flip it back (the jitter bug). `else if` keeps both walls of an axis from
+    /// triggering in one frame, as in the lesson's hint.
+    pub fn bounce_off_walls(&mut self, walls: &Walls) {
+        if self.x - self.radius < 0.0 {
+            self.x = self.radius;
+            self.vx = -self.vx * walls.damping;
+        } else if self.x + self.radius > walls.width {
+            self.x = walls.width - self.radius;
+            self.vx = -self.vx * walls.damping;
+        }
+        if self.y - self.radius < 0.0 {
+            self.y = self.radius;
+            self.vy = -self.vy * walls.damping;
+        } else if self.y + self.radius > walls.height {
+            self.y = walls.height - self.radius;
+            self.vy = -self.vy * walls.damping;
+        }
+    }
+
+    /// Puts a ball that something other than its own motion pushed out of the box (a
+    /// neighbour, in a ball-ball collision) back inside, without touching its velocity: it
+    /// did not hit the wall, it was shoved.
+    pub fn keep_inside(&mut self, walls: &Walls) {
+        self.x = self.x.clamp(self.radius, walls.width - self.radius);
+        self.y = self.y.clamp(self.radius, walls.height - self.radius);
+    }
+
+    /// Appends the current position to the trail. After the move, so the trail ends where the
+    /// ball is drawn (reflection question 3).
+    pub fn record_trail(&mut self) {
+        self.trail.push(self.x, self.y);
+    }
+}
+/// The last few positions of a ball, oldest first, never more than its capacity.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Trail {
+    points: VecDeque<(f64, f64)>,
+    capacity: usize,
+}
+
+impl Trail {
+    /// An empty trail that keeps at most `capacity` points (0 keeps none).
+    pub fn new(capacity: usize) -> Trail {
+        Trail {
+            points: VecDeque::new(),
+            capacity,
+        }
+    }
+
+    /// Adds the newest point and drops the oldest beyond capacity, so memory stays bounded.
+    pub fn push(&mut self, x: f64, y: f64) {
+        self.points.push_back((x, y));
+        if self.points.len() > self.capacity {
+            self.points.pop_front();
+        }
+    }
+
+    /// How many points the trail holds now.
+    pub fn len(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Whether the trail holds no point.
+    pub fn is_empty(&self) -> bool {
+        self.points.is_empty()
+    }
+
+    /// The points, oldest first.
+    pub fn iter(&self) -> impl ExactSizeIterator<Item = &(f64, f64)> + '_ {
+        self.points.iter()
+    }
+}

@@ -1,0 +1,34 @@
+//! Physics: balls, the forces and boundaries acting on them, and how a frame moves them.
+//!
+//! Knows nothing of scene files, pixels or GIFs. The lesson's whole loop is [`ball::Ball::step`];
+//! the rest generalises it:
+//!
+//! - [`ball`], [`walls`], [`floor`]: a ball's state and trail, the box, sloped segments.
+//! - [`effects`]: which forces and boundaries a scene has (an absent one costs nothing).
+//! - [`integrator`], [`motion`], [`exact`], [`poly`]: turning forces into motion; substeps;
+//!   bouncing at the exact time of impact.
+//! - [`collisions`], [`grid`]: ball-ball contacts and the broad phase that finds them.
+//! - [`simulation`]: all balls advanced one frame, in the order above.
+//! - [`accuracy`]: closed forms to measure the solver against; [`work`]: counting effect work.
+
+pub mod accuracy;
+pub mod ball;
+pub mod collisions;
+pub mod effects;
+pub mod exact;
+pub mod floor;
+pub mod grid;
+pub mod integrator;
+pub mod motion;
+pub mod poly;
+pub mod simulation;
+pub mod walls;
+pub mod work;
+
+pub use ball::{Ball, Trail};
+pub use effects::Effects;
+pub use floor::Floor;
+pub use integrator::Integrator;
+pub use motion::{CollisionMode, Motion};
+pub use simulation::Simulation;
+pub use walls::Walls;

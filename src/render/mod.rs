@@ -1,0 +1,13 @@
+//! Rendering: a frame of balls drawn into palette indices, and the still PNG.
+//!
+//! - [`palette`]: the colour table, built once per scene, with the trail's faded shades.
+//! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
+//! - [`png`]: one frame as an RGB PNG.
+
+pub mod palette;
+pub mod png;
+pub mod raster;
+
+pub use palette::Palette;
+pub use png::write_png;
+pub use raster::{to_rgb, IndexedFrame, Renderer};

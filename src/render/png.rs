@@ -1,0 +1,21 @@
+//! The still picture: one indexed frame written as an RGB PNG.
+
+use std::io::{self, Write};
+
+use image::ImageEncoder;
+
+use super::palette::Palette;
+use super::raster::{to_rgb, IndexedFrame};
+
+/// Writes `frame` as an RGB PNG.
+pub fn write_png(out: impl Write, frame: &IndexedFrame, palette: &Palette) -> io::Result<()> {
+    let rgb = to_rgb(frame, palette);
+    image::codecs::png::PngEncoder::new(out)
+        .write_image(
+            rgb.as_raw(),
+            rgb.width(),
+            rgb.height(),
+            image::ExtendedColorType::Rgb8,
+        )
+        .map_err(io::Error::other)
+}

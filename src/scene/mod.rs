@@ -1,0 +1,17 @@
+//! Scenes: what one run simulates and draws, where it comes from, and the checks it passes.
+//!
+//! - [`spec`]: the scene itself (canvas, balls, effects, motion), its limits and validation.
+//! - [`file`]: TOML scene files and the bundled presets.
+//! - [`overrides`]: command-line flags laid over a scene.
+//! - [`random`]: the seeded generator behind `[spawn]` (same seed, same scene).
+//!
+//! A scene is a plain description; [`spec::Scene::simulation`] sets it in motion.
+
+pub mod file;
+pub mod overrides;
+pub mod random;
+pub mod spec;
+
+pub use file::{preset_names, SceneFileError, PRESETS};
+pub use overrides::Overrides;
+pub use spec::{BallSpec, InvalidValue, Rgb, Scene};
