@@ -112,7 +112,6 @@ fn work_done(scene: &Scene, frames: u32) -> [u64; 5] {
 }
 
 #[test]
-#[cfg_attr(not(debug_assertions), ignore = "work is tallied in debug builds only")]
 fn an_effect_the_scene_does_not_call_for_never_runs() {
     // [gravity, drag, walls, floor checks, ball-ball passes] over 100 frames.
     let cases = [
@@ -148,7 +147,6 @@ fn a_scene_without_ball_collisions_never_builds_the_grid() {
 }
 
 #[test]
-#[cfg_attr(not(debug_assertions), ignore = "work is tallied in debug builds only")]
 fn without_walls_no_wall_check_runs() {
     let scene = Scene {
         walls: None,

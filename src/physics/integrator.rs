@@ -81,7 +81,7 @@ impl Forces {
         }
     }
 
-    /// Counts this step's gravity and drag work (debug builds; see `super::work`).
+    /// Counts this step's gravity and drag work (with the `work-tally` feature; see `super::work`).
     fn tally(&self) {
         if self.gravity.is_some() {
             tally(Work::Gravity);

@@ -1,6 +1,6 @@
-//! A tally of the work each effect does, kept in debug builds only (tests run them), so a
-//! test can prove that an effect a scene does not call for never runs. Release builds
-//! compile every `tally` to nothing.
+//! A tally of the work each effect does, kept only with the `work-tally` feature (the tests
+//! turn it on), so a test can prove that an effect a scene does not call for never runs.
+//! Without it every `tally` compiles to nothing.
 
 /// A piece of per-frame work that only some scenes call for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -17,32 +17,32 @@ pub enum Work {
     BallCollisions,
 }
 
-#[cfg(debug_assertions)]
+#[cfg(feature = "work-tally")]
 const KINDS: usize = 5;
 
-#[cfg(debug_assertions)]
+#[cfg(feature = "work-tally")]
 thread_local! {
     static COUNTS: std::cell::Cell<[u64; KINDS]> = const { std::cell::Cell::new([0; KINDS]) };
 }
 
-/// Counts one unit of `work` on this thread (debug builds only).
+/// Counts one unit of `work` on this thread (with the `work-tally` feature only).
 #[inline(always)]
 pub fn tally(work: Work) {
-    #[cfg(debug_assertions)]
+    #[cfg(feature = "work-tally")]
     COUNTS.with(|counts| {
         let mut c = counts.get();
         c[work as usize] += 1;
         counts.set(c);
     });
-    #[cfg(not(debug_assertions))]
+    #[cfg(not(feature = "work-tally"))]
     let _ = work;
 }
 
-/// How much `work` this thread has done since the last `reset` (always 0 in release builds).
+/// How much `work` this thread has done since the last `reset` (always 0 without the `work-tally` feature).
 pub fn count(work: Work) -> u64 {
-    #[cfg(debug_assertions)]
+    #[cfg(feature = "work-tally")]
     return COUNTS.with(|counts| counts.get()[work as usize]);
-    #[cfg(not(debug_assertions))]
+    #[cfg(not(feature = "work-tally"))]
     {
         let _ = work;
         0
@@ -51,6 +51,6 @@ pub fn count(work: Work) -> u64 {
 
 /// Sets every count on this thread back to 0.
 pub fn reset() {
-    #[cfg(debug_assertions)]
+    #[cfg(feature = "work-tally")]
     COUNTS.with(|counts| counts.set([0; KINDS]));
 }

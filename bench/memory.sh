@@ -3,9 +3,9 @@
 # process, on the lesson's scene (the ball comes to rest, so late frames are one pixel)
 # and on the elastic preset (it bounces forever, so every frame has real work).
 # Memory should stay flat and time grow in step with the frames. Wall times include
-# starting /usr/bin/time itself; benches/ and examples/bench_vs_python.rs time more finely.
+# starting /usr/bin/time itself; bench/benches/ and examples/bench_vs_python.rs time more finely.
 #
-# Usage: benches/memory.sh [RUNS]   (RUNS per point, median kept; default 3)
+# Usage: bench/memory.sh [RUNS]   (RUNS per point, median kept; default 3)
 # Needs GNU time at /usr/bin/time (Debian: apt-get install -y time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
