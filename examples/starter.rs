@@ -1,15 +1,16 @@
 //! Exercise 3 of the lesson: implement the physics from scratch.
 //!
 //! Run it: `cargo run --release --example starter`. It writes `starter.gif` with the
-//! library's renderer, then compares your ball with the library's `Ball` frame by frame.
+//! library's renderer, then compares your ball with the library's `Ball::step` frame by frame.
 //! As shipped the ball just floats (nothing moves it); fill in the three TODOs in
-//! `StarterBall::step` until it reports a match.
+//! `StarterBall::step` until it reports a match. When your ball differs, it says at which
+//! frame, shows the values, and names the lesson's pitfall the difference looks like.
 
 use std::fs::File;
 use std::io::BufWriter;
 
 use bouncing_ball::gif::GifWriter;
-use bouncing_ball::physics::ball::{Ball, Trail};
+use bouncing_ball::physics::{Ball, Trail, Walls};
 use bouncing_ball::render::Renderer;
 use bouncing_ball::{BallSpec, Scene};
 
@@ -80,6 +81,111 @@ fn scene() -> Scene {
     }
 }
 
+/// The lesson's "common pitfalls" that show in one step, so that a ball that differs from the
+/// library's can be matched against them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Pitfall {
+    NothingMoves,
+    NoClamp,
+    GravityTwice,
+    GravityAtBounce,
+    PositionFirst,
+    TrailBeforeMove,
+}
+
+impl Pitfall {
+    const ALL: [Pitfall; 6] = [
+        Pitfall::NothingMoves,
+        Pitfall::NoClamp,
+        Pitfall::GravityTwice,
+        Pitfall::GravityAtBounce,
+        Pitfall::PositionFirst,
+        Pitfall::TrailBeforeMove,
+    ];
+
+    fn explain(self) -> &'static str {
+        match self {
+            Pitfall::NothingMoves => "nothing moves the ball yet: the TODOs are still empty",
+            Pitfall::NoClamp => {
+                "reflecting the velocity without clamping the position: the ball sinks into \
+                 the wall and jitters there (put it back on the wall, then flip the velocity)"
+            }
+            Pitfall::GravityTwice => "adding gravity twice in one step",
+            Pitfall::GravityAtBounce => {
+                "adding gravity again in the wall response: the ball speeds up at every bounce"
+            }
+            Pitfall::PositionFirst => {
+                "moving the ball before adding gravity: the lesson changes the velocity first"
+            }
+            Pitfall::TrailBeforeMove => {
+                "appending to the trail before the move: the trail lags a frame behind the ball"
+            }
+        }
+    }
+
+    /// One step of the lesson with this pitfall in it.
+    fn step(self, ball: &mut Ball) {
+        if self == Pitfall::NothingMoves {
+            ball.record_trail();
+            return;
+        }
+        if self == Pitfall::TrailBeforeMove {
+            ball.record_trail();
+        }
+        let kicks = if self == Pitfall::GravityTwice { 2 } else { 1 };
+        if self != Pitfall::PositionFirst {
+            for _ in 0..kicks {
+                ball.vy += GRAVITY;
+            }
+        }
+        ball.x += ball.vx;
+        ball.y += ball.vy;
+        if self == Pitfall::PositionFirst {
+            ball.vy += GRAVITY;
+        }
+        let r = ball.radius;
+        let axes = [
+            (&mut ball.x, &mut ball.vx, WIDTH, 0.0),
+            (&mut ball.y, &mut ball.vy, HEIGHT, GRAVITY),
+        ];
+        for (position, velocity, size, gravity) in axes {
+            let wall = if *position - r < 0.0 {
+                r
+            } else if *position + r > size {
+                size - r
+            } else {
+                continue;
+            };
+            if self != Pitfall::NoClamp {
+                *position = wall;
+            }
+            *velocity = -*velocity * BOUNCE_DAMPING;
+            if self == Pitfall::GravityAtBounce {
+                *velocity += gravity;
+            }
+        }
+        if self != Pitfall::TrailBeforeMove {
+            ball.record_trail();
+        }
+    }
+}
+
+/// Which pitfall turns `before` into `yours` in one step, if any does.
+fn diagnose(before: &Ball, yours: &Ball, library: &Ball) -> Option<&'static str> {
+    let simulated = Pitfall::ALL.into_iter().find_map(|pitfall| {
+        let mut ball = before.clone();
+        pitfall.step(&mut ball);
+        (ball == *yours).then(|| pitfall.explain())
+    });
+    let whole = |ball: &Ball| ball.x.fract() == 0.0 && ball.y.fract() == 0.0;
+    simulated.or_else(|| {
+        (whole(yours) && !whole(library)).then_some(
+            "using whole numbers for the position: sub-pixel motion vanishes and slow balls \
+             freeze (keep x and y as f64)",
+        )
+    })
+}
+
 fn main() -> std::io::Result<()> {
     let scene = scene();
     let renderer = Renderer::new(&scene).expect("the lesson's colours fit a GIF");
@@ -101,16 +207,22 @@ fn main() -> std::io::Result<()> {
         radius: RADIUS,
         trail: Trail::new(TRAIL_LEN),
     };
-    let mut library = scene.simulation();
+    let walls = Walls {
+        width: WIDTH,
+        height: HEIGHT,
+        damping: BOUNCE_DAMPING,
+    };
+    let mut library = yours.as_ball();
     let mut first_difference = None;
     for n in 0..FRAMES {
+        let before = library.clone();
         yours.step();
-        library.step();
-        let (a, b) = (yours.as_ball(), &library.balls()[0]);
-        if first_difference.is_none() && (a.x, a.y, a.vx, a.vy) != (b.x, b.y, b.vx, b.vy) {
-            first_difference = Some((n, a.clone(), b.clone()));
+        library.step(GRAVITY, &walls);
+        let mine = yours.as_ball();
+        if first_difference.is_none() && mine != library {
+            first_difference = Some((n, before, mine.clone(), library.clone()));
         }
-        renderer.draw(&[a], &mut frame);
+        renderer.draw(&[mine], &mut frame);
         gif.write_frame(&frame)?;
     }
     gif.finish()?;
@@ -120,7 +232,7 @@ fn main() -> std::io::Result<()> {
         None => {
             println!("MATCH: your ball follows the library's Ball exactly for all {FRAMES} frames.")
         }
-        Some((n, a, b)) => {
+        Some((n, before, a, b)) => {
             println!("MISMATCH at frame {n} (0 = after the first step):");
             for (name, yours, library) in [
                 ("x", a.x, b.x),
@@ -134,6 +246,15 @@ fn main() -> std::io::Result<()> {
                     "   <- differs"
                 };
                 println!("  {name:>2}: yours {yours:<22} library {library:<22}{marker}");
+            }
+            if a.trail != b.trail {
+                println!("  the trails differ");
+            }
+            match diagnose(&before, &a, &b) {
+                Some(pitfall) => println!("Looks like a pitfall from the lesson: {pitfall}."),
+                None => {
+                    println!("This is not one of the lesson's pitfalls: compare with the hint.")
+                }
             }
         }
     }

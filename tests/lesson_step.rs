@@ -1,0 +1,125 @@
+//! `Ball::step` is the lesson's loop written out; the general solver (`Simulation` with the
+//! default motion) must give the same numbers on every single-ball scene the lesson could
+//! set up, so a learner who reads or edits `Ball::step` reads the program's real physics.
+
+mod common;
+
+use bouncing_ball::physics::{Ball, Walls};
+use bouncing_ball::{BallSpec, Scene};
+use common::lesson_scene;
+use proptest::prelude::*;
+
+/// Equal to the last bit, except that −0.0 and +0.0 count as equal: the general solver adds
+/// the horizontal gravity 0.0 to `vx`, which turns the −0.0 of a dead-stopped bounce into +0.0
+/// (same value, same motion, different sign bit).
+fn same(a: f64, b: f64) -> bool {
+    a.to_bits() == b.to_bits() || (a == 0.0 && b == 0.0)
+}
+
+/// Runs `scene` (one ball, vertical gravity, walls) both ways for `frames` frames and
+/// returns the first frame at which they differ, with both balls.
+fn first_difference(scene: &Scene, frames: u32) -> Option<(u32, Ball, Ball)> {
+    let spec = &scene.balls[0];
+    let gravity = scene.gravity.map_or(0.0, |g| g[1]);
+    let walls = Walls {
+        width: f64::from(scene.width),
+        height: f64::from(scene.height),
+        damping: scene.walls.expect("the lesson's scene has walls"),
+    };
+    let mut lesson = Ball::new(spec.x, spec.y, spec.vx, spec.vy, spec.radius, spec.trail);
+    let mut general = scene.simulation();
+    for frame in 0..frames {
+        lesson.step(gravity, &walls);
+        general.step();
+        let solver = &general.balls()[0];
+        let equal = [
+            (lesson.x, solver.x),
+            (lesson.y, solver.y),
+            (lesson.vx, solver.vx),
+            (lesson.vy, solver.vy),
+        ]
+        .iter()
+        .all(|&(a, b)| same(a, b))
+            && lesson.trail == solver.trail;
+        if !equal {
+            return Some((frame, lesson, solver.clone()));
+        }
+    }
+    None
+}
+
+#[test]
+fn the_lessons_step_and_the_general_solver_agree_on_the_lessons_scene() {
+    let scene = lesson_scene();
+    if let Some((frame, lesson, solver)) = first_difference(&scene, 2000) {
+        panic!("frame {frame}: Ball::step gives {lesson:?}, the solver gives {solver:?}");
+    }
+}
+
+#[test]
+fn a_difference_is_noticed() {
+    // The check itself must be able to fail: a different damping is a different run.
+    let scene = lesson_scene();
+    let mut other = scene.clone();
+    other.walls = Some(0.87);
+    let spec = &scene.balls[0];
+    let mut lesson = Ball::new(spec.x, spec.y, spec.vx, spec.vy, spec.radius, spec.trail);
+    let mut general = other.simulation();
+    let walls = Walls {
+        width: 320.0,
+        height: 240.0,
+        damping: 0.88,
+    };
+    let differs = (0..200).any(|_| {
+        lesson.step(0.5, &walls);
+        general.step();
+        !same(lesson.vy, general.balls()[0].vy)
+    });
+    assert!(differs, "damping 0.87 and 0.88 gave the same run");
+}
+
+fn single_ball_scene() -> impl Strategy<Value = Scene> {
+    (
+        (40u32..800, 40u32..600),
+        (0.5..20.0f64, 0.0..1.0f64, 0.0..1.0f64),
+        (-30.0..30.0f64, -30.0..30.0f64),
+        (-2.0..2.0f64, 0.0..=1.0f64, 0usize..30),
+    )
+        .prop_map(
+            |((width, height), (radius, fx, fy), (vx, vy), (g, damping, trail))| {
+                let (w, h) = (f64::from(width), f64::from(height));
+                Scene {
+                    balls: vec![BallSpec {
+                        x: radius + fx * (w - 2.0 * radius),
+                        y: radius + fy * (h - 2.0 * radius),
+                        vx,
+                        vy,
+                        radius,
+                        colour: [255, 200, 60],
+                        trail_colour: [60, 140, 255],
+                        trail,
+                    }],
+                    gravity: Some([0.0, g]),
+                    walls: Some(damping),
+                    frames: 500,
+                    ..Scene::empty(width, height)
+                }
+            },
+        )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn the_lessons_step_and_the_general_solver_agree_on_random_single_ball_scenes(
+        scene in single_ball_scene()
+    ) {
+        let difference = first_difference(&scene, scene.frames);
+        prop_assert!(
+            difference.is_none(),
+            "frame {:?}: Ball::step and the solver differ",
+            difference.map(|(frame, lesson, solver)| (frame, lesson, solver))
+        );
+    }
+}
