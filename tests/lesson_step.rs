@@ -118,8 +118,8 @@ proptest! {
         let difference = first_difference(&scene, scene.frames);
         prop_assert!(
             difference.is_none(),
-            "frame {:?}: Ball::step and the solver differ",
-            difference.map(|(frame, lesson, solver)| (frame, lesson, solver))
+            "(frame, Ball::step, solver) differ: {:?}",
+            difference
         );
     }
 }
