@@ -20,18 +20,19 @@
 use super::raster::IndexedFrame;
 
 /// Circles this wide or wider are not drawn. A scene's radius is under half its canvas side
-/// (at most 8,192 px), so this is never reached; it keeps the trace's products `a²Y²` far
-/// inside `i64`.
-pub const MAX_DIAMETER: f64 = 65_536.0;
+/// (at most 8,192 px), so this is never reached; it keeps the trace's sums of products
+/// such as `a²Y²` (below 2.4e18) inside `i64`.
+pub const MAX_DIAMETER: f64 = 32_768.0;
 
 /// Fills the circle of centre `(x, y)` and radius `radius` (px, floats) with `index`,
-/// pixel for pixel as Pillow's `ImageDraw.ellipse` fills its bounding box.
+/// pixel for pixel as Pillow's `ImageDraw.ellipse` fills its bounding box. A negative radius
+/// (a box Pillow refuses) fills nothing.
 pub fn fill_circle(frame: &mut IndexedFrame, x: f64, y: f64, radius: f64, index: u8) {
     let (width, height) = (f64::from(frame.width()), f64::from(frame.height()));
     let (left, right, top, bottom) = (x - radius, x + radius, y - radius, y + radius);
     // Truncation puts pixel 0 within reach of any edge above -1; NaN fails every test.
     let on_canvas = right > -1.0 && left < width && bottom > -1.0 && top < height;
-    if !(on_canvas && 2.0 * radius < MAX_DIAMETER) {
+    if !(on_canvas && (0.0..MAX_DIAMETER).contains(&(2.0 * radius))) {
         return;
     }
     // In range for i64 now, so `as` truncates towards zero exactly as C's (int) does.
@@ -86,6 +87,26 @@ impl QuarterTrace {
     fn miss(&self, x: i64, y: i64) -> i64 {
         (self.a2 * y * y + self.b2 * x * x - self.a2b2).abs()
     }
+
+    /// Follows the trace up to the next grid row: left while a left step lands nearest the
+    /// curve, then up or diagonally up-left, whichever is nearer (up on a tie, and always up
+    /// once at the axis).
+    fn climb(&mut self) {
+        while self.x > 1 {
+            let up = self.miss(self.x, self.y + 2);
+            let diagonal = self.miss(self.x - 2, self.y + 2);
+            let left = self.miss(self.x - 2, self.y);
+            if left < up.min(diagonal) {
+                self.x -= 2;
+                continue;
+            }
+            if diagonal < up {
+                self.x -= 2;
+            }
+            break;
+        }
+        self.y += 2;
+    }
 }
 
 impl Iterator for QuarterTrace {
@@ -96,23 +117,10 @@ impl Iterator for QuarterTrace {
             return None;
         }
         let row_start = (self.x, self.y);
-        self.done = self.y >= self.b;
-        // Walk left along this row until the trace steps up to the next one.
-        while !self.done {
-            let up = self.miss(self.x, self.y + 2);
-            if self.x > 1 {
-                let diagonal = self.miss(self.x - 2, self.y + 2);
-                let left = self.miss(self.x - 2, self.y);
-                if left < up.min(diagonal) {
-                    self.x -= 2;
-                    continue;
-                }
-                if diagonal < up {
-                    self.x -= 2;
-                }
-            }
-            self.y += 2;
-            break;
+        if self.y >= self.b {
+            self.done = true;
+        } else {
+            self.climb();
         }
         Some(row_start)
     }
@@ -135,6 +143,11 @@ mod tests {
     #[test]
     fn a_box_under_one_pixel_wide_and_tall_fills_nothing() {
         assert_eq!(filled(8, 3.5, 3.5, 0.2), vec![]);
+    }
+
+    #[test]
+    fn a_negative_radius_fills_nothing() {
+        assert_eq!(filled(8, 4.0, 4.0, -2.0), vec![]);
     }
 
     #[test]
