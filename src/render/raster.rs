@@ -140,8 +140,9 @@ fn clip_segment(from: [f64; 2], to: [f64; 2], canvas: [f64; 2]) -> Option<([f64;
     if from[major].max(to[major]) < low || from[major].min(to[major]) > high {
         return None;
     }
-    // The line as `minor = intercept + slope * major`, |slope| <= 1: written this way a
-    // far-away end does not swamp the coordinates near the canvas.
+    // The line as `minor = intercept + slope * major`, |slope| <= 1. Floating point cannot
+    // place a line finer than the last bit of its far ends, but in this form lines such as
+    // y = 120 or y = x with ends at ±1e30 come out exact.
     let slope = delta[minor] / delta[major];
     let intercept = from[minor] - slope * from[major];
     let cut = |end: [f64; 2]| {
