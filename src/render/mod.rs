@@ -1,9 +1,11 @@
 //! Rendering: a frame of balls drawn into palette indices, and the still PNG.
 //!
 //! - [`palette`]: the colour table, built once per scene, with the trail's faded shades.
+//! - [`ellipse`]: solid circles, exactly the pixels Pillow's `ImageDraw.ellipse` fills.
 //! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
 //! - [`png`]: one frame as an RGB PNG.
 
+pub mod ellipse;
 pub mod palette;
 pub mod png;
 pub mod raster;

@@ -1,11 +1,13 @@
 //! The software rasteriser: one frame of balls and trails, drawn straight into palette
-//! indices (imageproc's solid circles on a one-channel image whose values are indices).
+//! indices on a one-channel image whose values are indices. Circles are Pillow's, pixel for
+//! pixel ([`super::ellipse`]); floors are imageproc's line segments, clipped to the canvas.
 //!
 //! Drawing only: it reads where the balls are and never moves them.
 
 use image::{GrayImage, Luma};
-use imageproc::drawing::{draw_filled_circle_mut, draw_line_segment_mut};
+use imageproc::drawing::draw_line_segment_mut;
 
+use super::ellipse::fill_circle;
 use super::palette::{fade, fade_levels, quantised_fade, shade, Palette, TooManyColours};
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
@@ -103,14 +105,12 @@ impl Renderer {
     /// and shrinking into the past), then every ball on top, so no trail hides a ball.
     pub fn draw(&self, balls: &[Ball], frame: &mut IndexedFrame) {
         frame.fill(self.background);
+        let canvas = [f64::from(self.width), f64::from(self.height)];
         for floor in &self.floors {
-            let point = |[x, y]: [f64; 2]| (x as f32, y as f32);
-            draw_line_segment_mut(
-                frame,
-                point(floor.from),
-                point(floor.to),
-                Luma([self.floor]),
-            );
+            if let Some((from, to)) = clip_segment(floor.from, floor.to, canvas) {
+                let point = |[x, y]: [f64; 2]| (x as f32, y as f32);
+                draw_line_segment_mut(frame, point(from), point(to), Luma([self.floor]));
+            }
         }
         for (ball, style) in balls.iter().zip(&self.styles) {
             let n = ball.trail.len();
@@ -125,10 +125,37 @@ impl Renderer {
     }
 }
 
-/// A solid circle centred on the nearest pixel to `(x, y)`, radius rounded to whole pixels.
-fn fill_circle(frame: &mut IndexedFrame, x: f64, y: f64, radius: f64, index: u8) {
-    let centre = (x.round() as i32, y.round() as i32);
-    draw_filled_circle_mut(frame, centre, radius.round() as i32, Luma([index]));
+/// The segment `from`-`to`, cut along its longer axis to one pixel beyond the canvas
+/// (`canvas` = width, height), in floating point: imageproc walks the longer axis pixel by
+/// pixel, so a floor from -1e30 to 1e30 then costs no more than one across the canvas.
+/// `None` when it misses the canvas along that axis. Ends already inside stay, to the bit.
+fn clip_segment(from: [f64; 2], to: [f64; 2], canvas: [f64; 2]) -> Option<([f64; 2], [f64; 2])> {
+    let delta = [to[0] - from[0], to[1] - from[1]];
+    let (major, minor) = if delta[1].abs() > delta[0].abs() {
+        (1, 0)
+    } else {
+        (0, 1)
+    };
+    let (low, high) = (-1.0, canvas[major] + 1.0);
+    if from[major].max(to[major]) < low || from[major].min(to[major]) > high {
+        return None;
+    }
+    // The line as `minor = intercept + slope * major`, |slope| <= 1. Floating point cannot
+    // place a line finer than the last bit of its far ends, but in this form lines such as
+    // y = 120 or y = x with ends at ±1e30 come out exact.
+    let slope = delta[minor] / delta[major];
+    let intercept = from[minor] - slope * from[major];
+    let cut = |end: [f64; 2]| {
+        let along = end[major].clamp(low, high);
+        if along == end[major] {
+            return end;
+        }
+        let mut point = [0.0; 2];
+        point[major] = along;
+        point[minor] = intercept + slope * along;
+        point
+    };
+    Some((cut(from), cut(to)))
 }
 
 /// A frame's colours: each index looked up in the palette.

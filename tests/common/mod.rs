@@ -100,21 +100,20 @@ pub fn test_output_dir() -> PathBuf {
     dir
 }
 
+/// How to regenerate the lesson-made test data (goldens, frame CRCs, Pillow's circles).
+pub const REBLESS: &str = "python3 tools/lesson.py bless (needs Pillow: pip install pillow)";
+
 /// Compares `actual` with the committed golden `tests/golden/NAME.png`, pixel by pixel.
-/// With `UPDATE_GOLDEN=1` it writes the golden instead (the only way goldens change).
-/// On a mismatch it writes `NAME.new.png` and `NAME.diff.png` and names them.
+/// Goldens are drawn by the lesson's script with Pillow (`tools/lesson.py bless`), never by
+/// this program. On a mismatch it writes `NAME.new.png` and `NAME.diff.png` and names them.
 pub fn assert_golden(name: &str, actual: &RgbImage) {
     let golden_path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/golden")
         .join(format!("{name}.png"));
-    if std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1") {
-        actual.save(&golden_path).expect("write the golden");
-        return;
-    }
     let golden = image::open(&golden_path)
         .unwrap_or_else(|e| {
             panic!(
-                "cannot read golden {}: {e} (create it with UPDATE_GOLDEN=1 cargo test)",
+                "cannot read golden {}: {e} (the lesson's script makes it: {REBLESS})",
                 golden_path.display()
             )
         })
@@ -147,7 +146,7 @@ pub fn assert_golden(name: &str, actual: &RgbImage) {
         diff.save(&diff_path).expect("write the diff image");
     }
     panic!(
-        "{name}: {} pixels differ from {} (sizes {:?} vs {:?}).\n  new:  {}\n  diff: {} (magenta = differs)\n  If the change is intended, re-bless on purpose: UPDATE_GOLDEN=1 cargo test --test golden",
+        "{name}: {} pixels differ from the lesson script's {} (sizes {:?} vs {:?}).\n  new:  {}\n  diff: {} (magenta = differs)\n  Our frames must be Pillow's. Only if the lesson's script or Pillow changed on purpose, re-bless: {REBLESS}",
         if same_size { differing.to_string() } else { "all".to_string() },
         golden_path.display(),
         golden.dimensions(),

@@ -1,0 +1,168 @@
+//! Solid circles drawn exactly as the lesson draws them: the pixels Pillow's
+//! `ImageDraw.ellipse([x - r, y - r, x + r, y + r], fill=...)` fills, for float `x`, `y`, `r`.
+//!
+//! Pillow's rule (read in its `_imaging.c` and `libImaging/Draw.c`, written anew here):
+//! 1. The float box is cut to whole pixels by truncation towards zero (C's `(int)`), so
+//!    `-0.7` becomes `0`, not `-1`. The box spans `a = x1 - x0` by `b = y1 - y0` pixels.
+//!    A box with `a = b = 0` fills nothing.
+//! 2. On a grid of half pixels the outline of the ellipse `X²/a² + Y²/b² = 1` is traced
+//!    through one quarter, from `(a, b mod 2)` up to `(a mod 2, b)`, in steps of 2 (so every
+//!    point keeps the parity of `a` and `b`): each step goes up, diagonally up-left or left,
+//!    whichever lands nearest the curve (the smallest `|b²X² + a²Y² - a²b²|`; ties prefer
+//!    up, then diagonal).
+//! 3. The first point the trace reaches on each grid row `Y` sets that row's half width
+//!    `X`. Rows `±Y` are filled from column `x0 + (a - X) / 2` to `x0 + (a + X) / 2`,
+//!    inclusive, on pixel rows `y0 + (b ± Y) / 2`.
+//!
+//! Only what is on the canvas costs anything: a circle whose box misses the canvas is
+//! dismissed in floating point, before any conversion to integers, and each row is clipped.
+
+use super::raster::IndexedFrame;
+
+/// Circles this wide or wider are not drawn. A scene's radius is under half its canvas side
+/// (at most 8,192 px), so this is never reached; it keeps the trace's sums of products
+/// such as `a²Y²` (below 2.4e18) inside `i64`.
+pub const MAX_DIAMETER: f64 = 32_768.0;
+
+/// Fills the circle of centre `(x, y)` and radius `radius` (px, floats) with `index`,
+/// pixel for pixel as Pillow's `ImageDraw.ellipse` fills its bounding box. A negative radius
+/// (a box Pillow refuses) fills nothing.
+pub fn fill_circle(frame: &mut IndexedFrame, x: f64, y: f64, radius: f64, index: u8) {
+    let (width, height) = (f64::from(frame.width()), f64::from(frame.height()));
+    let (left, right, top, bottom) = (x - radius, x + radius, y - radius, y + radius);
+    // Truncation puts pixel 0 within reach of any edge above -1; NaN fails every test.
+    let on_canvas = right > -1.0 && left < width && bottom > -1.0 && top < height;
+    if !(on_canvas && (0.0..MAX_DIAMETER).contains(&(2.0 * radius))) {
+        return;
+    }
+    // In range for i64 now, so `as` truncates towards zero exactly as C's (int) does.
+    let (x0, y0) = (left as i64, top as i64);
+    let (a, b) = (right as i64 - x0, bottom as i64 - y0);
+    if a == 0 && b == 0 {
+        return;
+    }
+    let columns = frame.width() as i64;
+    let rows = frame.height() as i64;
+    let pixels: &mut [u8] = frame;
+    let mut fill_row = |row: i64, half_width: i64| {
+        let first = (x0 + (a - half_width) / 2).max(0);
+        let last = (x0 + (a + half_width) / 2).min(columns - 1);
+        if (0..rows).contains(&row) && first <= last {
+            let start = (row * columns) as usize;
+            pixels[start + first as usize..=start + last as usize].fill(index);
+        }
+    };
+    for (half_width, grid_row) in QuarterTrace::new(a, b) {
+        fill_row(y0 + (b + grid_row) / 2, half_width);
+        fill_row(y0 + (b - grid_row) / 2, half_width);
+    }
+}
+
+/// Pillow's trace of a quarter ellipse on the half-pixel grid (rule 2 above), yielding the
+/// first point of each grid row: `(half width X, grid row Y)`, from `Y = b mod 2` up to `b`.
+struct QuarterTrace {
+    a2: i64,
+    b2: i64,
+    a2b2: i64,
+    b: i64,
+    x: i64,
+    y: i64,
+    done: bool,
+}
+
+impl QuarterTrace {
+    fn new(a: i64, b: i64) -> QuarterTrace {
+        QuarterTrace {
+            a2: a * a,
+            b2: b * b,
+            a2b2: a * a * b * b,
+            b,
+            x: a,
+            y: b % 2,
+            done: false,
+        }
+    }
+
+    /// How far the point `(x, y)` is off the curve.
+    fn miss(&self, x: i64, y: i64) -> i64 {
+        (self.a2 * y * y + self.b2 * x * x - self.a2b2).abs()
+    }
+
+    /// Follows the trace up to the next grid row: left while a left step lands nearest the
+    /// curve, then up or diagonally up-left, whichever is nearer (up on a tie, and always up
+    /// once at the axis).
+    fn climb(&mut self) {
+        while self.x > 1 {
+            let up = self.miss(self.x, self.y + 2);
+            let diagonal = self.miss(self.x - 2, self.y + 2);
+            let left = self.miss(self.x - 2, self.y);
+            if left < up.min(diagonal) {
+                self.x -= 2;
+                continue;
+            }
+            if diagonal < up {
+                self.x -= 2;
+            }
+            break;
+        }
+        self.y += 2;
+    }
+}
+
+impl Iterator for QuarterTrace {
+    type Item = (i64, i64);
+
+    fn next(&mut self) -> Option<(i64, i64)> {
+        if self.done {
+            return None;
+        }
+        let row_start = (self.x, self.y);
+        if self.y >= self.b {
+            self.done = true;
+        } else {
+            self.climb();
+        }
+        Some(row_start)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn filled(side: u32, x: f64, y: f64, r: f64) -> Vec<(u32, u32)> {
+        let mut frame = IndexedFrame::new(side, side);
+        fill_circle(&mut frame, x, y, r, 1);
+        frame
+            .enumerate_pixels()
+            .filter(|p| p.2[0] == 1)
+            .map(|p| (p.0, p.1))
+            .collect()
+    }
+
+    #[test]
+    fn a_box_under_one_pixel_wide_and_tall_fills_nothing() {
+        assert_eq!(filled(8, 3.5, 3.5, 0.2), vec![]);
+    }
+
+    #[test]
+    fn a_negative_radius_fills_nothing() {
+        assert_eq!(filled(8, 4.0, 4.0, -2.0), vec![]);
+    }
+
+    #[test]
+    fn a_box_one_pixel_wide_fills_its_two_columns() {
+        // Box [2.6, 3.4] x [2.6, 3.4] truncates to (2, 2)-(3, 3): a = b = 1, four pixels.
+        assert_eq!(
+            filled(8, 3.0, 3.0, 0.4),
+            vec![(2, 2), (3, 2), (2, 3), (3, 3)]
+        );
+    }
+
+    #[test]
+    fn negative_box_edges_truncate_towards_zero() {
+        // Box [-0.9, 0.5] x [2.3, 3.7]: both x edges truncate to 0 (a = 0, b = 1), so a
+        // column of two pixels, where rounding down would have drawn a 2 x 2 square.
+        assert_eq!(filled(8, -0.2, 3.0, 0.7), vec![(0, 2), (0, 3)]);
+    }
+}
