@@ -1,11 +1,14 @@
 //! The command line. The constants below are the default scene: edit one, run
 //! `cargo run --release`, and watch what changes. Each is also a flag (`--help`).
 
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
 use bouncing_ball::physics::{CollisionMode, Integrator};
 use bouncing_ball::scene::{self, preset_names, Overrides, SceneFileError};
+use bouncing_ball::stop::Stop;
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene};
 use clap::parser::ValueSource;
 use clap::{ArgAction, ArgMatches, CommandFactory, FromArgMatches, Parser, Subcommand};
@@ -64,7 +67,7 @@ const TRAIL_COLOUR: [u8; 3] = [60, 140, 255];
 struct Args {
     #[command(subcommand)]
     command: Option<Command>,
-    /// Load the scene from a TOML file
+    /// Load the scene from a TOML file (- for standard input)
     #[arg(short, long, conflicts_with = "preset")]
     scene: Option<PathBuf>,
     /// Load a bundled scene
@@ -130,9 +133,12 @@ struct Args {
     /// Where to write the still PNG (the last frame)
     #[arg(long, default_value = "bouncing_ball.png")]
     png: PathBuf,
-    /// Also write every frame's state as CSV (frame,ball,x,y,vx,vy)
+    /// Also write every frame's state as CSV (frame,ball,x,y,vx,vy); - for standard output
     #[arg(long)]
     trace: Option<PathBuf>,
+    /// Refuse a scene predicted to need more memory than this, MB
+    #[arg(long, default_value_t = DEFAULT_MEMORY_BUDGET >> 20)]
+    memory_budget: u64,
     /// Print nothing on success
     #[arg(short, long)]
     quiet: bool,
@@ -237,16 +243,25 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    let stop = match Stop::on_signals() {
+        Ok(stop) => stop,
+        Err(error) => {
+            eprintln!("error: cannot watch for Ctrl-C: {error}");
+            return ExitCode::from(1);
+        }
+    };
     let outputs = Outputs {
-        gif: args.gif.clone(),
-        png: args.png.clone(),
         trace: args.trace.clone(),
         progress: !args.quiet,
+        scene_file: args.scene.clone(),
+        memory_budget: args.memory_budget.saturating_mul(1 << 20),
+        stop,
+        ..Outputs::new(&args.gif, &args.png)
     };
     match run(&scene, &outputs) {
         Ok(summary) => {
             if !args.quiet {
-                println!(
+                let line = format!(
                     "wrote {} ({} frames, {} bytes) and {} ({} bytes) in {:.1} ms",
                     outputs.gif.display(),
                     summary.frames,
@@ -255,6 +270,12 @@ fn main() -> ExitCode {
                     summary.png_bytes,
                     summary.elapsed.as_secs_f64() * 1000.0
                 );
+                // Standard output may carry the trace, or be a closed pipe: never fail on it.
+                let _ = if outputs.trace_on_stdout() {
+                    writeln!(std::io::stderr(), "{line}")
+                } else {
+                    writeln!(std::io::stdout(), "{line}")
+                };
             }
             ExitCode::SUCCESS
         }

@@ -3,13 +3,16 @@
 //!
 //! Drawing only: it reads where the balls are and never moves them.
 
+use std::collections::HashMap;
+use std::sync::Arc;
+
 use image::{GrayImage, Luma};
 use imageproc::drawing::{draw_filled_circle_mut, draw_line_segment_mut};
 
 use super::palette::{fade, fade_levels, quantised_fade, shade, Palette, TooManyColours};
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
-use crate::scene::spec::Scene;
+use crate::scene::spec::{Rgb, Scene};
 
 /// A frame as palette indices, one byte per pixel.
 pub type IndexedFrame = GrayImage;
@@ -30,8 +33,10 @@ pub struct Renderer {
 #[derive(Clone, Debug)]
 struct BallStyle {
     ball: u8,
-    /// Index of dot `i` of a trail of `n` at `n * (n - 1) / 2 + i`.
-    trail_shades: Vec<u8>,
+    /// Index of dot `i` of a trail of `n` at `n * (n - 1) / 2 + i`. A shade depends only on
+    /// the trail colour, so balls of one trail colour share one table, as long as their
+    /// longest trail needs: memory follows the trail colours, not the number of balls.
+    trail_shades: Arc<[u8]>,
 }
 
 impl BallStyle {
@@ -48,11 +53,12 @@ impl Renderer {
             .chain(floor_colour)
             .chain(scene.balls.iter().map(|b| b.colour))
             .collect();
-        let trails: Vec<_> = scene
-            .balls
-            .iter()
-            .map(|b| (b.trail_colour, b.trail))
-            .collect();
+        let mut longest: HashMap<Rgb, usize> = HashMap::new();
+        for ball in &scene.balls {
+            let len = longest.entry(ball.trail_colour).or_default();
+            *len = (*len).max(ball.trail);
+        }
+        let trails: Vec<(Rgb, usize)> = longest.into_iter().collect();
         let levels = fade_levels(&solid, &trails)?;
         let mut palette = Palette::new();
         let too_many = || TooManyColours {
@@ -63,21 +69,39 @@ impl Renderer {
             Some(colour) => palette.insert(colour).ok_or_else(too_many)?,
             None => background,
         };
-        let mut styles = Vec::with_capacity(scene.balls.len());
+        // Ball by ball as before, so the palette's order (and the GIF's bytes) stay the
+        // same: a trail longer than its colour's table so far extends that table.
+        let mut tables: Vec<Vec<u8>> = Vec::new();
+        let mut table_of: HashMap<Rgb, usize> = HashMap::new();
+        let mut uses = Vec::with_capacity(scene.balls.len());
         for spec in &scene.balls {
             let ball = palette.insert(spec.colour).ok_or_else(too_many)?;
-            let mut trail_shades = Vec::with_capacity(spec.trail * (spec.trail + 1) / 2);
-            for n in 1..=spec.trail {
+            let table = *table_of.entry(spec.trail_colour).or_insert_with(|| {
+                tables.push(Vec::new());
+                tables.len() - 1
+            });
+            let shades = &mut tables[table];
+            let mut n = (1..).find(|n| n * (n - 1) / 2 >= shades.len()).unwrap_or(1);
+            while n <= spec.trail {
                 for i in 0..n {
                     let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
                     let index = palette
                         .insert(shade(spec.trail_colour, f))
                         .ok_or_else(too_many)?;
-                    trail_shades.push(index);
+                    shades.push(index);
                 }
+                n += 1;
             }
-            styles.push(BallStyle { ball, trail_shades });
+            uses.push((ball, table));
         }
+        let tables: Vec<Arc<[u8]>> = tables.into_iter().map(Arc::from).collect();
+        let styles = uses
+            .into_iter()
+            .map(|(ball, table)| BallStyle {
+                ball,
+                trail_shades: Arc::clone(&tables[table]),
+            })
+            .collect();
         Ok(Renderer {
             width: scene.width,
             height: scene.height,
