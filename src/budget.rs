@@ -25,7 +25,7 @@ pub const WARN_GIF_BYTES: f64 = 1e9;
 pub const WARN_FRAME_MS: u32 = 20;
 
 /// What the program itself takes before any scene: code, stacks, the threads' arenas.
-const BASE_BYTES: u64 = 16 << 20;
+const BASE_BYTES: u64 = 8 << 20;
 /// Bytes per pixel of frame buffers outside the GIF queue: the frame being drawn, the frame
 /// the GIF shows, and at the end the RGB copy and the PNG being compressed.
 const FRAME_BYTES_PER_PIXEL: u64 = 6;
@@ -38,14 +38,16 @@ const GRID_BYTES_PER_BALL: u64 = 32 + 8 + 12 * 8;
 const STYLE_BYTES_PER_BALL: u64 = 24;
 
 // Rough costs on the reference machine, ns, for the time prediction.
-const NS_PER_BALL_STEP: f64 = 15.0;
-const NS_PER_FLOOR_TEST: f64 = 5.0;
-const NS_PER_GRID_BALL: f64 = 40.0;
-const NS_PER_PAIR_TEST: f64 = 5.0;
-const NS_PER_DOT: f64 = 40.0;
-const NS_PER_DRAWN_PIXEL: f64 = 1.0;
-const NS_PER_CANVAS_PIXEL: f64 = 0.5;
-const NS_PER_CHANGED_PIXEL: f64 = 5.0;
+const NS_PER_BALL_STEP: f64 = 30.0;
+const NS_PER_FLOOR_TEST: f64 = 10.0;
+const NS_PER_GRID_BALL: f64 = 80.0;
+const NS_PER_PAIR_TEST: f64 = 10.0;
+const NS_PER_DOT: f64 = 80.0;
+const NS_PER_DRAWN_PIXEL: f64 = 2.0;
+const NS_PER_CANVAS_PIXEL: f64 = 2.0;
+/// Once per run, per canvas pixel: the first (whole) frame and the PNG.
+const NS_PER_CANVAS_PIXEL_ONCE: f64 = 20.0;
+const NS_PER_CHANGED_PIXEL: f64 = 8.0;
 /// LZW bytes per changed pixel of a typical frame (mostly flat background).
 const GIF_BYTES_PER_CHANGED_PIXEL: f64 = 0.25;
 
@@ -156,7 +158,7 @@ impl Estimate {
         Estimate {
             memory,
             frame_ns,
-            seconds: frame_ns * frames * 1e-9,
+            seconds: (frame_ns * frames + canvas * NS_PER_CANVAS_PIXEL_ONCE) * 1e-9,
             gif_bytes: canvas + changed * GIF_BYTES_PER_CHANGED_PIXEL * frames,
             biggest,
         }

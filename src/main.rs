@@ -221,11 +221,37 @@ fn flag(key: &str) -> String {
     format!("--{}", name.replace('_', "-"))
 }
 
+/// A command-line error in one line (clap adds usage and tips on more), or help and version
+/// printed as clap prints them.
+fn refuse(error: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind::{DisplayHelp, DisplayVersion};
+    if matches!(error.kind(), DisplayHelp | DisplayVersion) {
+        error.exit();
+    }
+    let text = error.to_string();
+    eprintln!(
+        "{}; see --help",
+        text.lines().next().unwrap_or("error").trim_end()
+    );
+    ExitCode::from(2)
+}
+
 fn main() -> ExitCode {
-    let matches = Args::command().get_matches();
+    // First, so a signal at any moment later finds the run's files to clean up.
+    let stop = match Stop::on_signals() {
+        Ok(stop) => stop,
+        Err(error) => {
+            eprintln!("error: cannot watch for Ctrl-C: {error}");
+            return ExitCode::from(1);
+        }
+    };
+    let matches = match Args::command().try_get_matches() {
+        Ok(matches) => matches,
+        Err(error) => return refuse(error),
+    };
     let args = match Args::from_arg_matches(&matches) {
         Ok(args) => args,
-        Err(error) => error.exit(),
+        Err(error) => return refuse(error),
     };
     if let Some(Command::Completions { shell }) = args.command {
         clap_complete::generate(
@@ -241,13 +267,6 @@ fn main() -> ExitCode {
         Err(error) => {
             eprintln!("error: {error}");
             return ExitCode::from(2);
-        }
-    };
-    let stop = match Stop::on_signals() {
-        Ok(stop) => stop,
-        Err(error) => {
-            eprintln!("error: cannot watch for Ctrl-C: {error}");
-            return ExitCode::from(1);
         }
     };
     let outputs = Outputs {

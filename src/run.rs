@@ -149,9 +149,12 @@ fn check_finite(scene: &Scene, balls: &[Ball], frame: u32) -> Result<(), RunErro
     Err(RunError::NonFinite {
         ball: i,
         frame,
-        state: format!("x {}, y {}, vx {}, vy {}", ball.x, ball.y, ball.vx, ball.vy),
+        state: format!(
+            "x {:?}, y {:?}, vx {:?}, vy {:?}",
+            ball.x, ball.y, ball.vx, ball.vy
+        ),
         inputs: format!(
-            "x {}, y {}, vx {}, vy {}, {gravity}",
+            "x {:?}, y {:?}, vx {:?}, vy {:?}, {gravity}",
             spec.x, spec.y, spec.vx, spec.vy
         ),
     })
@@ -165,11 +168,6 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     let estimate = Estimate::of(scene);
     estimate.check(outputs.memory_budget)?;
     output::check(&outputs.list(), outputs.scene_file.as_deref())?;
-    if outputs.progress {
-        for warning in estimate.warnings(scene) {
-            eprintln!("warning: {warning}");
-        }
-    }
     let renderer = Renderer::new(scene)?;
     // Open every output first, so an unwritable folder fails before any work is done.
     let mut gif_file = AtomicFile::create(&outputs.gif)?;
@@ -178,6 +176,12 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         Some(path) if !output::is_stdout(path) => Some(AtomicFile::create(path)?),
         _ => None,
     };
+    // Only once nothing more can be refused, so a refusal stays a single line.
+    if outputs.progress {
+        for warning in estimate.warnings(scene) {
+            eprintln!("warning: {warning}");
+        }
+    }
 
     let gif_error = OutputError::at(&outputs.gif);
     let mut gif = GifWriter::new(

@@ -168,7 +168,9 @@ const GOOD_HEAD: &str = "width = 320\nheight = 240\n";
 fn an_unknown_key_is_named_with_the_file_and_line() {
     let err = parse_error(&format!("{GOOD_HEAD}gravty = [0.0, 0.5]\n"));
     assert!(
-        err.starts_with("bad.toml: line 3: unknown key `gravty`; the keys allowed here are `width`"),
+        err.starts_with(
+            "bad.toml: line 3: unknown key `gravty`; the keys allowed here are `width`"
+        ),
         "{err}"
     );
     assert_eq!(err.lines().count(), 1, "one line: {err}");
