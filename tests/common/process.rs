@@ -146,6 +146,9 @@ pub fn args(list: &[&str]) -> Vec<String> {
     list.iter().map(|s| s.to_string()).collect()
 }
 
+/// A folder's contents by relative path.
+pub type Snapshot = BTreeMap<PathBuf, Entry>;
+
 /// What sits at a path, compared before and after a run.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Entry {
