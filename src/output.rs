@@ -117,6 +117,9 @@ fn unusable(path: &Path, may_be_stdout: bool) -> Option<String> {
         return (!may_be_stdout)
             .then(|| "standard output (-) is only for --trace; give a file name".to_string());
     }
+    if path.as_os_str().is_empty() {
+        return Some("is empty; give a file name".to_string());
+    }
     if path.as_os_str().as_encoded_bytes().ends_with(b"/") || path.file_name().is_none() {
         return Some("names a folder, not a file; give a file name".to_string());
     }

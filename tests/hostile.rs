@@ -297,7 +297,10 @@ fn judge(
                         .read_info(std::fs::File::open(&full).map_err(|e| e.to_string())?)
                         .map(|mut d| while let Ok(Some(_)) = d.read_next_frame() {})
                         .is_ok(),
-                    "--png" => image::open(&full).is_ok(),
+                    // By content: the name need not end in .png.
+                    "--png" => std::fs::read(&full).is_ok_and(|bytes| {
+                        image::load_from_memory_with_format(&bytes, image::ImageFormat::Png).is_ok()
+                    }),
                     _ => std::fs::read_to_string(&full).is_ok_and(|t| t.starts_with("frame,ball")),
                 };
                 if !decodes {

@@ -90,6 +90,7 @@ fn an_output_that_is_not_a_regular_file_is_refused_before_any_work() {
         ("--gif", "broken-link", "symbolic link to nothing"),
         ("--gif", "-", "only for --trace"),
         ("--png", "-", "only for --trace"),
+        ("--trace", "", "a value is required for '--trace <TRACE>'"),
     ] {
         let list: Vec<&str> = [flag, path].iter().chain(&long).copied().collect();
         assert_refused(dir.path(), &list, 2, says);
