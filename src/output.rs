@@ -146,8 +146,13 @@ fn unusable(path: &Path, may_be_stdout: bool) -> Option<String> {
     } else {
         "not a regular file"
     };
+    let hint = if may_be_stdout && !kind.is_dir() {
+        " (for standard output, give -)"
+    } else {
+        ""
+    };
     Some(format!(
-        "is {what}; an output must be a regular file or a new name"
+        "is {what}; an output must be a regular file or a new name{hint}"
     ))
 }
 
