@@ -45,6 +45,35 @@ impl BallStyle {
     }
 }
 
+/// One trail colour's shades, for every trail up to `longest` points, laid out as
+/// [`BallStyle::trail_shades`].
+#[derive(Default)]
+struct ShadeTable {
+    longest: usize,
+    shades: Vec<u8>,
+}
+
+impl ShadeTable {
+    /// Adds the shades of trails up to `trail` points in `colour` to the table and the
+    /// palette (faded to `levels` steps when given). `None` once the palette is full.
+    fn extend_to(
+        &mut self,
+        trail: usize,
+        colour: Rgb,
+        levels: Option<usize>,
+        palette: &mut Palette,
+    ) -> Option<()> {
+        for n in self.longest + 1..=trail {
+            for i in 0..n {
+                let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
+                self.shades.push(palette.insert(shade(colour, f))?);
+            }
+        }
+        self.longest = self.longest.max(trail);
+        Some(())
+    }
+}
+
 impl Renderer {
     /// Builds the palette for a (validated) scene.
     pub fn new(scene: &Scene) -> Result<Renderer, TooManyColours> {
@@ -71,30 +100,21 @@ impl Renderer {
         };
         // Ball by ball as before, so the palette's order (and the GIF's bytes) stay the
         // same: a trail longer than its colour's table so far extends that table.
-        let mut tables: Vec<Vec<u8>> = Vec::new();
+        let mut tables: Vec<ShadeTable> = Vec::new();
         let mut table_of: HashMap<Rgb, usize> = HashMap::new();
         let mut uses = Vec::with_capacity(scene.balls.len());
         for spec in &scene.balls {
             let ball = palette.insert(spec.colour).ok_or_else(too_many)?;
             let table = *table_of.entry(spec.trail_colour).or_insert_with(|| {
-                tables.push(Vec::new());
+                tables.push(ShadeTable::default());
                 tables.len() - 1
             });
-            let shades = &mut tables[table];
-            let mut n = (1..).find(|n| n * (n - 1) / 2 >= shades.len()).unwrap_or(1);
-            while n <= spec.trail {
-                for i in 0..n {
-                    let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
-                    let index = palette
-                        .insert(shade(spec.trail_colour, f))
-                        .ok_or_else(too_many)?;
-                    shades.push(index);
-                }
-                n += 1;
-            }
+            tables[table]
+                .extend_to(spec.trail, spec.trail_colour, levels, &mut palette)
+                .ok_or_else(too_many)?;
             uses.push((ball, table));
         }
-        let tables: Vec<Arc<[u8]>> = tables.into_iter().map(Arc::from).collect();
+        let tables: Vec<Arc<[u8]>> = tables.into_iter().map(|t| t.shades.into()).collect();
         let styles = uses
             .into_iter()
             .map(|(ball, table)| BallStyle {
@@ -160,4 +180,46 @@ pub fn to_rgb(frame: &IndexedFrame, palette: &Palette) -> image::RgbImage {
     image::RgbImage::from_fn(frame.width(), frame.height(), |x, y| {
         image::Rgb(palette.rgb(frame.get_pixel(x, y)[0]))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::spec::BallSpec;
+
+    fn ball(trail_colour: Rgb, trail: usize) -> BallSpec {
+        BallSpec {
+            x: 50.0,
+            y: 50.0,
+            vx: 0.0,
+            vy: 0.0,
+            radius: 5.0,
+            colour: [255, 200, 60],
+            trail_colour,
+            trail,
+        }
+    }
+
+    #[test]
+    fn balls_of_one_trail_colour_share_a_table_that_gives_every_ball_its_exact_shades() {
+        let (blue, red) = ([60, 140, 255], [255, 90, 90]);
+        let scene = Scene {
+            balls: vec![ball(blue, 5), ball(red, 3), ball(blue, 2), ball(blue, 9)],
+            ..Scene::empty(100, 100)
+        };
+        let renderer = Renderer::new(&scene).unwrap();
+        for (spec, style) in scene.balls.iter().zip(&renderer.styles) {
+            for n in 1..=spec.trail {
+                for i in 0..n {
+                    let got = renderer.palette.rgb(style.trail_shade(i, n));
+                    let want = shade(spec.trail_colour, fade(i, n));
+                    assert_eq!(got, want, "trail {} dot {i} of {n}", spec.trail);
+                }
+            }
+        }
+        let styles = &renderer.styles;
+        assert!(Arc::ptr_eq(&styles[0].trail_shades, &styles[3].trail_shades));
+        assert!(!Arc::ptr_eq(&styles[0].trail_shades, &styles[1].trail_shades));
+        assert_eq!(styles[3].trail_shades.len(), 9 * 10 / 2, "sized by the longest trail");
+    }
 }
