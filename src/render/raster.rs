@@ -218,8 +218,18 @@ mod tests {
             }
         }
         let styles = &renderer.styles;
-        assert!(Arc::ptr_eq(&styles[0].trail_shades, &styles[3].trail_shades));
-        assert!(!Arc::ptr_eq(&styles[0].trail_shades, &styles[1].trail_shades));
-        assert_eq!(styles[3].trail_shades.len(), 9 * 10 / 2, "sized by the longest trail");
+        assert!(Arc::ptr_eq(
+            &styles[0].trail_shades,
+            &styles[3].trail_shades
+        ));
+        assert!(!Arc::ptr_eq(
+            &styles[0].trail_shades,
+            &styles[1].trail_shades
+        ));
+        assert_eq!(
+            styles[3].trail_shades.len(),
+            9 * 10 / 2,
+            "sized by the longest trail"
+        );
     }
 }
