@@ -137,7 +137,7 @@ struct Args {
     #[arg(long)]
     trace: Option<PathBuf>,
     /// Refuse a scene predicted to need more memory than this, MB
-    #[arg(long, default_value_t = DEFAULT_MEMORY_BUDGET >> 20)]
+    #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_BUDGET >> 20)]
     memory_budget: u64,
     /// Print nothing on success
     #[arg(short, long)]
