@@ -9,9 +9,12 @@
 //! - [`render`]: a frame drawn into palette indices; the still PNG.
 //! - [`gif`]: the animated GIF, streamed out.
 //!
-//! At the top, [`run`] ties them together for the command line, [`output`] makes files appear
-//! whole or not at all, [`trace`] writes the CSV and [`progress`] shows how far a long run is.
+//! At the top, [`run`] ties them together for the command line, [`budget`] works out before
+//! the first frame what a scene will cost, [`output`] makes files appear whole or not at all
+//! and only where a file belongs, [`stop`] ends a run cleanly on a signal, [`trace`] writes
+//! the CSV and [`progress`] shows how far a long run is.
 
+pub mod budget;
 pub mod gif;
 pub mod output;
 pub mod physics;
@@ -19,6 +22,7 @@ pub mod progress;
 pub mod render;
 pub mod run;
 pub mod scene;
+pub mod stop;
 pub mod trace;
 
 pub use run::{run, Outputs, RunError, Summary};

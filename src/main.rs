@@ -1,11 +1,14 @@
 //! The command line. The constants below are the default scene: edit one, run
 //! `cargo run --release`, and watch what changes. Each is also a flag (`--help`).
 
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
 use bouncing_ball::physics::{CollisionMode, Integrator};
 use bouncing_ball::scene::{self, preset_names, Overrides, SceneFileError};
+use bouncing_ball::stop::Stop;
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene};
 use clap::parser::ValueSource;
 use clap::{ArgAction, ArgMatches, CommandFactory, FromArgMatches, Parser, Subcommand};
@@ -64,7 +67,7 @@ const TRAIL_COLOUR: [u8; 3] = [60, 140, 255];
 struct Args {
     #[command(subcommand)]
     command: Option<Command>,
-    /// Load the scene from a TOML file
+    /// Load the scene from a TOML file (- for standard input)
     #[arg(short, long, conflicts_with = "preset")]
     scene: Option<PathBuf>,
     /// Load a bundled scene
@@ -130,9 +133,12 @@ struct Args {
     /// Where to write the still PNG (the last frame)
     #[arg(long, default_value = "bouncing_ball.png")]
     png: PathBuf,
-    /// Also write every frame's state as CSV (frame,ball,x,y,vx,vy)
+    /// Also write every frame's state as CSV (frame,ball,x,y,vx,vy); - for standard output
     #[arg(long)]
     trace: Option<PathBuf>,
+    /// Refuse a scene predicted to need more memory than this, MB
+    #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_BUDGET >> 20)]
+    memory_budget: u64,
     /// Print nothing on success
     #[arg(short, long)]
     quiet: bool,
@@ -215,11 +221,37 @@ fn flag(key: &str) -> String {
     format!("--{}", name.replace('_', "-"))
 }
 
+/// A command-line error in one line (clap adds usage and tips on more), or help and version
+/// printed as clap prints them.
+fn refuse(error: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind::{DisplayHelp, DisplayVersion};
+    if matches!(error.kind(), DisplayHelp | DisplayVersion) {
+        error.exit();
+    }
+    let text = error.to_string();
+    eprintln!(
+        "{}; see --help",
+        text.lines().next().unwrap_or("error").trim_end()
+    );
+    ExitCode::from(2)
+}
+
 fn main() -> ExitCode {
-    let matches = Args::command().get_matches();
+    // First, so a signal at any moment later finds the run's files to clean up.
+    let stop = match Stop::on_signals() {
+        Ok(stop) => stop,
+        Err(error) => {
+            eprintln!("error: cannot watch for Ctrl-C: {error}");
+            return ExitCode::from(1);
+        }
+    };
+    let matches = match Args::command().try_get_matches() {
+        Ok(matches) => matches,
+        Err(error) => return refuse(error),
+    };
     let args = match Args::from_arg_matches(&matches) {
         Ok(args) => args,
-        Err(error) => error.exit(),
+        Err(error) => return refuse(error),
     };
     if let Some(Command::Completions { shell }) = args.command {
         clap_complete::generate(
@@ -238,15 +270,17 @@ fn main() -> ExitCode {
         }
     };
     let outputs = Outputs {
-        gif: args.gif.clone(),
-        png: args.png.clone(),
         trace: args.trace.clone(),
         progress: !args.quiet,
+        scene_file: args.scene.clone(),
+        memory_budget: args.memory_budget.saturating_mul(1 << 20),
+        stop,
+        ..Outputs::new(&args.gif, &args.png)
     };
     match run(&scene, &outputs) {
         Ok(summary) => {
             if !args.quiet {
-                println!(
+                let line = format!(
                     "wrote {} ({} frames, {} bytes) and {} ({} bytes) in {:.1} ms",
                     outputs.gif.display(),
                     summary.frames,
@@ -255,6 +289,12 @@ fn main() -> ExitCode {
                     summary.png_bytes,
                     summary.elapsed.as_secs_f64() * 1000.0
                 );
+                // Standard output may carry the trace, or be a closed pipe: never fail on it.
+                let _ = if outputs.trace_on_stdout() {
+                    writeln!(std::io::stderr(), "{line}")
+                } else {
+                    writeln!(std::io::stdout(), "{line}")
+                };
             }
             ExitCode::SUCCESS
         }

@@ -1,13 +1,56 @@
-//! Output files that appear whole or not at all: written to a temporary file beside the
-//! target, renamed over it only when complete.
+//! Output files that appear whole or not at all, and only where a file belongs.
+//!
+//! Three steps: [`check`] refuses, before any work, a path no output should take (a folder, a
+//! device, a pipe, the scene file, a path another output also names); [`AtomicFile`] writes
+//! each output to a temporary file beside its target; [`commit_all`] renames them into place
+//! only once every one is written and flushed. `-` means standard output where an output
+//! allows it: that stream is written as the run goes, and cannot be taken back.
 
-use std::fs::File;
-use std::io;
+use std::fs::{self, File};
+use std::io::{self, Write};
+use std::os::unix::fs::{FileTypeExt, MetadataExt};
 use std::path::{Path, PathBuf};
 
 use tempfile::NamedTempFile;
 
-/// A file that cannot be written, and why.
+/// The path that means standard output.
+pub const STDOUT: &str = "-";
+
+/// Whether `path` is `-`, standard output.
+pub fn is_stdout(path: &Path) -> bool {
+    path.as_os_str() == STDOUT
+}
+
+/// One output a run writes: the flag that names it, the path, and whether `-` may stand for
+/// standard output (a stream can go there; a GIF or PNG on a terminal would be garbage).
+#[derive(Clone, Copy, Debug)]
+pub struct Output<'a> {
+    pub flag: &'static str,
+    pub path: &'a Path,
+    pub may_be_stdout: bool,
+}
+
+impl Output<'_> {
+    /// A file output (a GIF, a PNG): `-` is refused.
+    pub fn file<'a>(flag: &'static str, path: &'a Path) -> Output<'a> {
+        Output {
+            flag,
+            path,
+            may_be_stdout: false,
+        }
+    }
+
+    /// A stream output (the trace): `-` is standard output.
+    pub fn stream<'a>(flag: &'static str, path: &'a Path) -> Output<'a> {
+        Output {
+            flag,
+            path,
+            may_be_stdout: true,
+        }
+    }
+}
+
+/// A file that cannot be written, and why (exit 1: the input was fine, the disk was not).
 #[derive(Debug, thiserror::Error)]
 #[error("cannot write {}: {source}", path.display())]
 pub struct OutputError {
@@ -26,21 +69,164 @@ impl OutputError {
     }
 }
 
-/// A file being written; dropped without `commit`, it vanishes and the target is untouched.
+/// An output path refused before any work (exit 2: the command line asked for something wrong).
+#[derive(Debug, thiserror::Error)]
+#[error("{flag} {}: {why}", path.display())]
+pub struct OutputRefused {
+    pub flag: &'static str,
+    pub path: PathBuf,
+    pub why: String,
+}
+
+/// Where a path's bytes would land, to tell two names for one file apart from two files.
+#[derive(Debug, PartialEq, Eq)]
+enum Identity {
+    /// An existing file (links followed): its device and inode, so hard links match too.
+    Existing { device: u64, inode: u64 },
+    /// A file still to be made: its folder's real path and its name.
+    New(PathBuf),
+    /// A file in a folder that does not exist; making its temporary file will say so.
+    Unknown,
+}
+
+fn identity(path: &Path) -> Identity {
+    if let Ok(meta) = fs::metadata(path) {
+        return Identity::Existing {
+            device: meta.dev(),
+            inode: meta.ino(),
+        };
+    }
+    let folder = folder_of(path);
+    match (fs::canonicalize(folder), path.file_name()) {
+        (Ok(real), Some(name)) => Identity::New(real.join(name)),
+        _ => Identity::Unknown,
+    }
+}
+
+/// The folder a path's file sits in (`.` for a bare name).
+fn folder_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    }
+}
+
+/// What is wrong with writing a file at `path` whatever else the run writes, if anything.
+fn unusable(path: &Path, may_be_stdout: bool) -> Option<String> {
+    if is_stdout(path) {
+        return (!may_be_stdout)
+            .then(|| "standard output (-) is only for --trace; give a file name".to_string());
+    }
+    if path.as_os_str().is_empty() {
+        return Some("is empty; give a file name".to_string());
+    }
+    if path.as_os_str().as_encoded_bytes().ends_with(b"/") || path.file_name().is_none() {
+        return Some("names a folder, not a file; give a file name".to_string());
+    }
+    let Ok(link) = fs::symlink_metadata(path) else {
+        return None; // a new file
+    };
+    let Ok(meta) = fs::metadata(path) else {
+        return link
+            .file_type()
+            .is_symlink()
+            .then(|| "is a symbolic link to nothing; remove it or give another name".to_string());
+    };
+    let kind = meta.file_type();
+    let what = if kind.is_file() {
+        return None;
+    } else if kind.is_dir() {
+        "a folder"
+    } else if kind.is_fifo() {
+        "a named pipe (FIFO)"
+    } else if kind.is_socket() {
+        "a socket"
+    } else if kind.is_char_device() || kind.is_block_device() {
+        "a device"
+    } else {
+        "not a regular file"
+    };
+    let hint = if may_be_stdout && !kind.is_dir() {
+        " (for standard output, give -)"
+    } else {
+        ""
+    };
+    Some(format!(
+        "is {what}; an output must be a regular file or a new name{hint}"
+    ))
+}
+
+/// Refuses, before any work, outputs that would replace something that is not a regular
+/// file, two outputs naming the same file, and an output naming `scene_file`.
+pub fn check(outputs: &[Output], scene_file: Option<&Path>) -> Result<(), OutputRefused> {
+    let refuse = |output: &Output, why: String| OutputRefused {
+        flag: output.flag,
+        path: output.path.to_path_buf(),
+        why,
+    };
+    for output in outputs {
+        if let Some(why) = unusable(output.path, output.may_be_stdout) {
+            return Err(refuse(output, why));
+        }
+    }
+    let files: Vec<(&Output, Identity)> = outputs
+        .iter()
+        .filter(|o| !is_stdout(o.path))
+        .map(|o| (o, identity(o.path)))
+        .collect();
+    let scene = scene_file
+        .filter(|p| !is_stdout(p))
+        .map(|p| (p, identity(p)));
+    for (k, (output, id)) in files.iter().enumerate() {
+        if *id == Identity::Unknown {
+            continue;
+        }
+        if let Some((scene_path, _)) = scene.as_ref().filter(|(_, s)| s == id) {
+            let why = format!("is the scene file ({}) being read", scene_path.display());
+            return Err(refuse(output, why));
+        }
+        if let Some((first, _)) = files[..k].iter().find(|(_, other)| other == id) {
+            let why = format!(
+                "is the same file as {} {}",
+                first.flag,
+                first.path.display()
+            );
+            return Err(refuse(output, why));
+        }
+    }
+    Ok(())
+}
+
+/// A file being written; dropped without being committed, it vanishes and the target is
+/// untouched.
 pub struct AtomicFile {
     temp: NamedTempFile,
+    /// Where the file goes: the path, or the file a symbolic link there points to, so the
+    /// link survives and its target is replaced.
+    target: PathBuf,
+    /// The path as given, for messages.
     path: PathBuf,
 }
 
 impl AtomicFile {
-    /// Starts writing `path` (the temporary file sits in the same folder, so the final
-    /// rename never crosses file systems).
+    /// Starts writing `path` (the temporary file sits in the same folder as the target, so
+    /// the final rename never crosses file systems).
     pub fn create(path: &Path) -> Result<AtomicFile, OutputError> {
-        let folder = match path.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p,
-            _ => Path::new("."),
+        let is_link = fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink());
+        let target = if is_link {
+            fs::canonicalize(path).map_err(OutputError::at(path))?
+        } else {
+            path.to_path_buf()
         };
-        let name = path.file_name().unwrap_or_default().to_string_lossy();
+        let folder = folder_of(&target);
+        if !folder.is_dir() {
+            let missing = io::Error::new(
+                io::ErrorKind::NotFound,
+                format!("there is no folder {}", folder.display()),
+            );
+            return Err(OutputError::at(path)(missing));
+        }
+        let name = target.file_name().unwrap_or_default().to_string_lossy();
         let temp = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
             .suffix(".tmp")
@@ -48,28 +234,100 @@ impl AtomicFile {
             .map_err(OutputError::at(path))?;
         Ok(AtomicFile {
             temp,
+            target,
             path: path.to_path_buf(),
         })
     }
 
-    /// Where the bytes go until `commit`.
+    /// Where the bytes go until the commit.
     pub fn file(&mut self) -> &mut File {
         self.temp.as_file_mut()
     }
 
-    /// Puts the finished file in place and returns its size in bytes.
-    pub fn commit(self) -> Result<u64, OutputError> {
+    /// The path as given.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Makes the written bytes durable and readable like any file we write; returns the size.
+    fn finish(&self) -> Result<u64, OutputError> {
         let at = || OutputError::at(&self.path);
-        self.temp.as_file().sync_all().map_err(at())?;
-        let bytes = self.temp.as_file().metadata().map_err(at())?.len();
+        let file = self.temp.as_file();
+        file.sync_all().map_err(at())?;
         // Temporary files are private (0600); outputs should read like any file we write.
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::PermissionsExt;
-            let public = std::fs::Permissions::from_mode(0o644);
-            self.temp.as_file().set_permissions(public).map_err(at())?;
+        use std::os::unix::fs::PermissionsExt;
+        file.set_permissions(fs::Permissions::from_mode(0o644))
+            .map_err(at())?;
+        Ok(file.metadata().map_err(at())?.len())
+    }
+
+    fn rename_into_place(self) -> Result<(), OutputError> {
+        let at = OutputError::at(&self.path);
+        self.temp.persist(&self.target).map_err(|e| at(e.error))?;
+        Ok(())
+    }
+}
+
+/// Puts every finished file in place and returns their sizes, in order. Nothing is renamed
+/// until every file is flushed to disk, so a failure up to then leaves every target as it
+/// was; only a failing rename itself can leave the earlier ones replaced and the later not.
+pub fn commit_all(files: Vec<AtomicFile>) -> Result<Vec<u64>, OutputError> {
+    let sizes = files
+        .iter()
+        .map(AtomicFile::finish)
+        .collect::<Result<Vec<_>, _>>()?;
+    for file in files {
+        file.rename_into_place()?;
+    }
+    Ok(sizes)
+}
+
+/// Standard output for a stream such as the trace. Once its reader has gone (`| head`),
+/// it falls silent instead of failing, as Unix filters do, and the run carries on.
+pub struct StdoutStream {
+    out: io::Stdout,
+    closed: bool,
+}
+
+impl StdoutStream {
+    pub fn new() -> StdoutStream {
+        StdoutStream {
+            out: io::stdout(),
+            closed: false,
         }
-        self.temp.persist(&self.path).map_err(|e| at()(e.error))?;
-        Ok(bytes)
+    }
+
+    fn unless_closed(&mut self, result: io::Result<usize>, len: usize) -> io::Result<usize> {
+        match result {
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
+                self.closed = true;
+                Ok(len)
+            }
+            other => other,
+        }
+    }
+}
+
+impl Default for StdoutStream {
+    fn default() -> Self {
+        StdoutStream::new()
+    }
+}
+
+impl Write for StdoutStream {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        if self.closed {
+            return Ok(buf.len());
+        }
+        let result = self.out.write(buf);
+        self.unless_closed(result, buf.len())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        if self.closed {
+            return Ok(());
+        }
+        let result = self.out.flush().map(|()| 0);
+        self.unless_closed(result, 0).map(|_| ())
     }
 }

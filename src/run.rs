@@ -1,28 +1,86 @@
 //! One whole run: simulate a scene, draw every frame, stream it into the GIF, keep the last
 //! frame as the PNG, and optionally trace every state as CSV.
+//!
+//! Everything that can be refused is refused before the first frame: the scene's values, its
+//! colours, its memory ([`crate::budget`]) and the output paths ([`crate::output::check`]).
+//! Every file is then written beside its target and renamed into place only at the end.
 
 use std::io::{BufWriter, Write};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use crate::budget::{Estimate, OverBudget, DEFAULT_MEMORY_BUDGET};
 use crate::gif::GifWriter;
-use crate::output::{AtomicFile, OutputError};
+use crate::output::{self, AtomicFile, Output, OutputError, OutputRefused, StdoutStream};
+use crate::physics::Ball;
 use crate::progress::Progress;
 use crate::render::palette::TooManyColours;
 use crate::render::raster::Renderer;
 use crate::render::write_png;
 use crate::scene::{InvalidValue, Scene};
+use crate::stop::{Signal, Stop};
 use crate::trace;
 
-/// Where a run writes.
+/// Where a run writes, and the limits it runs within.
 #[derive(Clone, Debug)]
 pub struct Outputs {
     pub gif: PathBuf,
     pub png: PathBuf,
-    /// The CSV of every ball's state in every frame, when asked for.
+    /// The CSV of every ball's state in every frame, when asked for; `-` is standard output.
     pub trace: Option<PathBuf>,
-    /// Show a progress bar on stderr if the run looks long (never when stderr is not a terminal).
+    /// Talk on stderr while running: warnings, and a progress bar if the run looks long
+    /// (never when stderr is not a terminal). False for `--quiet`.
     pub progress: bool,
+    /// The scene file the scene was read from, which no output may replace.
+    pub scene_file: Option<PathBuf>,
+    /// The most memory a run may be predicted to need, bytes.
+    pub memory_budget: u64,
+    /// Set by a signal: the run stops at the next frame and writes nothing.
+    pub stop: Stop,
+}
+
+impl Outputs {
+    /// The GIF and PNG at these paths, no trace, silent, the default budget, never stopped.
+    pub fn new(gif: impl Into<PathBuf>, png: impl Into<PathBuf>) -> Outputs {
+        Outputs {
+            gif: gif.into(),
+            png: png.into(),
+            trace: None,
+            progress: false,
+            scene_file: None,
+            memory_budget: DEFAULT_MEMORY_BUDGET,
+            stop: Stop::default(),
+        }
+    }
+
+    /// Every output this run writes, in the order they are renamed into place. A new kind
+    /// of output is one more entry here (and one more file in `run`).
+    pub fn list(&self) -> Vec<Output<'_>> {
+        let mut list = vec![
+            Output::file("--gif", &self.gif),
+            Output::file("--png", &self.png),
+        ];
+        if let Some(path) = &self.trace {
+            list.push(Output::stream("--trace", path));
+        }
+        list
+    }
+
+    /// Whether the trace goes to standard output (then nothing else should).
+    pub fn trace_on_stdout(&self) -> bool {
+        self.trace.as_deref().is_some_and(output::is_stdout)
+    }
+
+    /// The files a stopped or failed run leaves as they were, for its message.
+    fn files(&self) -> String {
+        let names: Vec<String> = self
+            .list()
+            .iter()
+            .filter(|o| !output::is_stdout(o.path))
+            .map(|o| o.path.display().to_string())
+            .collect();
+        names.join(", ")
+    }
 }
 
 /// What a run wrote.
@@ -42,32 +100,88 @@ pub enum RunError {
     #[error(transparent)]
     Colours(#[from] TooManyColours),
     #[error(transparent)]
+    OverBudget(#[from] OverBudget),
+    #[error(transparent)]
+    Refused(#[from] OutputRefused),
+    #[error("ball {ball} left the finite numbers at frame {frame} ({state}) from {inputs}; these values are too large to simulate, nothing was written")]
+    NonFinite {
+        ball: usize,
+        frame: u32,
+        state: String,
+        inputs: String,
+    },
+    #[error(transparent)]
     Output(#[from] OutputError),
+    #[error("stopped by {} at frame {frame} of {frames}: not written: {unwritten} (any earlier files are as they were)", signal.name)]
+    Stopped {
+        signal: Signal,
+        frame: u32,
+        frames: u32,
+        unwritten: String,
+    },
 }
 
 impl RunError {
-    /// 2 for input the program cannot use, 1 for a file it cannot write.
+    /// 2 for input the program cannot use, 1 for a file it cannot write, 128 + the signal's
+    /// number for a run stopped by one.
     pub fn exit_code(&self) -> u8 {
         match self {
-            RunError::Invalid(_) | RunError::Colours(_) => 2,
+            RunError::Invalid(_)
+            | RunError::Colours(_)
+            | RunError::OverBudget(_)
+            | RunError::Refused(_)
+            | RunError::NonFinite { .. } => 2,
             RunError::Output(_) => 1,
+            RunError::Stopped { signal, .. } => signal.exit_code(),
         }
     }
 }
 
-/// Runs `scene` and writes `outputs`; on any error no output file is left half-written.
+/// Checks that every ball is still a finite number, so no NaN is traced, drawn or written.
+fn check_finite(scene: &Scene, balls: &[Ball], frame: u32) -> Result<(), RunError> {
+    let Some((i, ball)) = balls.iter().enumerate().find(|(_, b)| !b.is_finite()) else {
+        return Ok(());
+    };
+    let spec = &scene.balls[i];
+    let gravity = scene
+        .gravity
+        .map_or("no gravity".to_string(), |g| format!("gravity {g:?}"));
+    Err(RunError::NonFinite {
+        ball: i,
+        frame,
+        state: format!(
+            "x {:?}, y {:?}, vx {:?}, vy {:?}",
+            ball.x, ball.y, ball.vx, ball.vy
+        ),
+        inputs: format!(
+            "x {:?}, y {:?}, vx {:?}, vy {:?}, {gravity}",
+            spec.x, spec.y, spec.vx, spec.vy
+        ),
+    })
+}
+
+/// Runs `scene` and writes `outputs`; on any error no output file is left half-written and
+/// no existing file is changed.
 pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     let started = Instant::now();
     scene.validate()?;
+    let estimate = Estimate::of(scene);
+    estimate.check(outputs.memory_budget)?;
+    output::check(&outputs.list(), outputs.scene_file.as_deref())?;
     let renderer = Renderer::new(scene)?;
-    // Open every output first, so an unwritable path fails before any work is done.
+    // Open every output first, so an unwritable folder fails before any work is done.
     let mut gif_file = AtomicFile::create(&outputs.gif)?;
     let mut png_file = AtomicFile::create(&outputs.png)?;
-    let mut trace_file = outputs
-        .trace
-        .as_deref()
-        .map(AtomicFile::create)
-        .transpose()?;
+    let mut trace_file = match &outputs.trace {
+        Some(path) if !output::is_stdout(path) => Some(AtomicFile::create(path)?),
+        _ => None,
+    };
+    // Only once nothing more can be refused, so a refusal stays a single line.
+    if outputs.progress {
+        for warning in estimate.warnings(scene) {
+            eprintln!("warning: {warning}");
+        }
+    }
 
     let gif_error = OutputError::at(&outputs.gif);
     let mut gif = GifWriter::new(
@@ -78,7 +192,11 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         scene.frame_ms,
     )
     .map_err(&gif_error)?;
-    let mut trace_out = trace_file.as_mut().map(|f| BufWriter::new(f.file()));
+    let mut trace_out: Option<BufWriter<Box<dyn Write + '_>>> = match trace_file.as_mut() {
+        Some(file) => Some(BufWriter::new(Box::new(file.file()))),
+        None if outputs.trace_on_stdout() => Some(BufWriter::new(Box::new(StdoutStream::new()))),
+        None => None,
+    };
     let trace_path = outputs.trace.as_deref().unwrap_or(&outputs.gif);
     if let Some(out) = trace_out.as_mut() {
         trace::write_header(out).map_err(OutputError::at(trace_path))?;
@@ -88,7 +206,9 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     let mut frame = renderer.new_frame();
     let mut progress = Progress::new(scene.frames, outputs.progress);
     for n in 0..scene.frames {
+        stop_if_asked(outputs, n, scene.frames)?;
         simulation.step();
+        check_finite(scene, simulation.balls(), n)?;
         if let Some(out) = trace_out.as_mut() {
             trace::write_frame(out, n, simulation.balls()).map_err(OutputError::at(trace_path))?;
         }
@@ -96,6 +216,7 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         gif.write_frame(&frame).map_err(&gif_error)?;
         progress.frames_done(n + 1);
     }
+    drop(progress);
     gif.finish()
         .and_then(|mut out| out.flush())
         .map_err(&gif_error)?;
@@ -109,15 +230,26 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         .map_err(OutputError::at(&outputs.png))?;
     drop(png_out);
 
-    let gif_bytes = gif_file.commit()?;
-    let png_bytes = png_file.commit()?;
-    if let Some(file) = trace_file {
-        file.commit()?;
-    }
+    // The last moment a signal stops the run; from here on the files go into place.
+    stop_if_asked(outputs, scene.frames, scene.frames)?;
+    let sizes = output::commit_all([gif_file, png_file].into_iter().chain(trace_file).collect())?;
     Ok(Summary {
         frames: scene.frames,
-        gif_bytes,
-        png_bytes,
+        gif_bytes: sizes[0],
+        png_bytes: sizes[1],
         elapsed: started.elapsed(),
     })
+}
+
+/// Returns `Stopped` if a signal has come.
+fn stop_if_asked(outputs: &Outputs, frame: u32, frames: u32) -> Result<(), RunError> {
+    match outputs.stop.requested() {
+        Some(signal) => Err(RunError::Stopped {
+            signal,
+            frame,
+            frames,
+            unwritten: outputs.files(),
+        }),
+        None => Ok(()),
+    }
 }

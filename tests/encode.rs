@@ -18,12 +18,7 @@ use image::Luma;
 
 /// Runs `scene` through the library into a temporary folder and returns the GIF's path.
 fn write_gif(scene: &Scene, dir: &Path) -> std::path::PathBuf {
-    let outputs = Outputs {
-        gif: dir.join("scene.gif"),
-        png: dir.join("scene.png"),
-        trace: None,
-        progress: false,
-    };
+    let outputs = Outputs::new(dir.join("scene.gif"), dir.join("scene.png"));
     run(scene, &outputs).expect("the scene runs");
     outputs.gif
 }

@@ -14,12 +14,10 @@ fn every_preset_gif_in_scenes_matches_a_fresh_render_byte_for_byte() {
     let mut stale = Vec::new();
     for (name, _) in PRESETS {
         let scene = scene_file::preset(name, 1).unwrap();
-        let outputs = Outputs {
-            gif: dir.path().join(format!("{name}.gif")),
-            png: dir.path().join(format!("{name}.png")),
-            trace: None,
-            progress: false,
-        };
+        let outputs = Outputs::new(
+            dir.path().join(format!("{name}.gif")),
+            dir.path().join(format!("{name}.png")),
+        );
         run(&scene, &outputs).unwrap_or_else(|e| panic!("preset {name}: {e}"));
         let fresh = std::fs::read(&outputs.gif).unwrap();
         let committed_path =

@@ -76,6 +76,13 @@ impl Ball {
         self.y = self.y.clamp(self.radius, walls.height - self.radius);
     }
 
+    /// Whether position and velocity are all finite numbers (a run stops if not).
+    pub fn is_finite(&self) -> bool {
+        [self.x, self.y, self.vx, self.vy]
+            .iter()
+            .all(|v| v.is_finite())
+    }
+
     /// Appends the current position to the trail. After the move, so the trail ends where the
     /// ball is drawn (reflection question 3).
     pub fn record_trail(&mut self) {

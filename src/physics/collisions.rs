@@ -23,8 +23,6 @@ pub struct Collisions {
     /// relative to each other along the normal (0 to 1; the scene checks it).
     restitution: f64,
     grid: Grid,
-    /// This frame's overlapping pairs, kept to reuse the allocation.
-    pairs: Vec<(usize, usize)>,
 }
 
 impl Collisions {
@@ -33,7 +31,6 @@ impl Collisions {
         Collisions {
             restitution,
             grid: Grid::new(),
-            pairs: Vec::new(),
         }
     }
 
@@ -42,11 +39,13 @@ impl Collisions {
     pub fn resolve(&mut self, balls: &mut [Ball]) {
         tally(Work::BallCollisions);
         self.grid.rebuild(balls);
-        self.grid.overlapping_pairs(&mut self.pairs);
-        for &(i, j) in &self.pairs {
+        // The grid found the pairs from where the balls were at `rebuild`, so resolving each
+        // as it is found gives the same result as listing them all first, without the list.
+        let restitution = self.restitution;
+        self.grid.for_each_overlapping_pair(|i, j| {
             let (head, tail) = balls.split_at_mut(j);
-            collide(&mut head[i], &mut tail[0], self.restitution, j);
-        }
+            collide(&mut head[i], &mut tail[0], restitution, j);
+        });
     }
 }
 

@@ -114,12 +114,19 @@ impl Grid {
         }
     }
 
-    /// Replaces the contents of `pairs` with every pair of balls that overlap (centres closer
-    /// than the sum of the radii; touching is not overlapping), as of the last `rebuild`.
-    /// Each pair appears once, as `(i, j)` with `i < j`, in an order that depends only on the
-    /// balls: cell by cell, row by row.
+    /// Replaces the contents of `pairs` with every pair of balls that overlap, in the order
+    /// of [`Grid::for_each_overlapping_pair`].
     pub fn overlapping_pairs(&self, pairs: &mut Vec<(usize, usize)>) {
         pairs.clear();
+        self.for_each_overlapping_pair(|i, j| pairs.push((i, j)));
+    }
+
+    /// Calls `found(i, j)` for every pair of balls that overlap (centres closer than the sum
+    /// of the radii; touching is not overlapping), as of the last `rebuild`. Each pair comes
+    /// once, with `i < j`, in an order that depends only on the balls: cell by cell, row by
+    /// row. Pairs are handed over as found rather than collected, so balls piled on top of
+    /// each other (N²/2 pairs) cost time but no memory.
+    pub fn for_each_overlapping_pair(&self, mut found: impl FnMut(usize, usize)) {
         for row in 0..self.rows {
             for column in 0..self.columns {
                 let here = self.cells(row, column, column);
@@ -138,8 +145,8 @@ impl Grid {
                 };
                 for a in here {
                     // Later balls of this cell and the cell to the right.
-                    self.push_overlaps(a, a + 1..right.end, pairs);
-                    self.push_overlaps(a, below.clone(), pairs);
+                    self.overlaps(a, a + 1..right.end, &mut found);
+                    self.overlaps(a, below.clone(), &mut found);
                 }
             }
         }
@@ -151,14 +158,14 @@ impl Grid {
         self.cell_start[start + first]..self.cell_start[start + last + 1]
     }
 
-    /// Pushes the pairs that entry `a` makes with the overlapping entries in `others`.
-    fn push_overlaps(&self, a: usize, others: Range<usize>, pairs: &mut Vec<(usize, usize)>) {
+    /// Hands `found` the pairs that entry `a` makes with the overlapping entries in `others`.
+    fn overlaps(&self, a: usize, others: Range<usize>, found: &mut impl FnMut(usize, usize)) {
         let a = self.entries[a];
         for b in &self.entries[others] {
             let (dx, dy) = (b.x - a.x, b.y - a.y);
             let reach = a.radius + b.radius;
             if dx * dx + dy * dy < reach * reach {
-                pairs.push((a.index.min(b.index), a.index.max(b.index)));
+                found(a.index.min(b.index), a.index.max(b.index));
             }
         }
     }

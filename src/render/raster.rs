@@ -4,6 +4,9 @@
 //!
 //! Drawing only: it reads where the balls are and never moves them.
 
+use std::collections::HashMap;
+use std::sync::Arc;
+
 use image::{GrayImage, Luma};
 use imageproc::drawing::draw_line_segment_mut;
 
@@ -11,7 +14,7 @@ use super::ellipse::fill_circle;
 use super::palette::{fade, fade_levels, quantised_fade, shade, Palette, TooManyColours};
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
-use crate::scene::spec::Scene;
+use crate::scene::spec::{Rgb, Scene};
 
 /// A frame as palette indices, one byte per pixel.
 pub type IndexedFrame = GrayImage;
@@ -32,13 +35,44 @@ pub struct Renderer {
 #[derive(Clone, Debug)]
 struct BallStyle {
     ball: u8,
-    /// Index of dot `i` of a trail of `n` at `n * (n - 1) / 2 + i`.
-    trail_shades: Vec<u8>,
+    /// Index of dot `i` of a trail of `n` at `n * (n - 1) / 2 + i`. A shade depends only on
+    /// the trail colour, so balls of one trail colour share one table, as long as their
+    /// longest trail needs: memory follows the trail colours, not the number of balls.
+    trail_shades: Arc<[u8]>,
 }
 
 impl BallStyle {
     fn trail_shade(&self, i: usize, n: usize) -> u8 {
         self.trail_shades[n * (n - 1) / 2 + i]
+    }
+}
+
+/// One trail colour's shades, for every trail up to `longest` points, laid out as
+/// [`BallStyle::trail_shades`].
+#[derive(Default)]
+struct ShadeTable {
+    longest: usize,
+    shades: Vec<u8>,
+}
+
+impl ShadeTable {
+    /// Adds the shades of trails up to `trail` points in `colour` to the table and the
+    /// palette (faded to `levels` steps when given). `None` once the palette is full.
+    fn extend_to(
+        &mut self,
+        trail: usize,
+        colour: Rgb,
+        levels: Option<usize>,
+        palette: &mut Palette,
+    ) -> Option<()> {
+        for n in self.longest + 1..=trail {
+            for i in 0..n {
+                let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
+                self.shades.push(palette.insert(shade(colour, f))?);
+            }
+        }
+        self.longest = self.longest.max(trail);
+        Some(())
     }
 }
 
@@ -50,11 +84,12 @@ impl Renderer {
             .chain(floor_colour)
             .chain(scene.balls.iter().map(|b| b.colour))
             .collect();
-        let trails: Vec<_> = scene
-            .balls
-            .iter()
-            .map(|b| (b.trail_colour, b.trail))
-            .collect();
+        let mut longest: HashMap<Rgb, usize> = HashMap::new();
+        for ball in &scene.balls {
+            let len = longest.entry(ball.trail_colour).or_default();
+            *len = (*len).max(ball.trail);
+        }
+        let trails: Vec<(Rgb, usize)> = longest.into_iter().collect();
         let levels = fade_levels(&solid, &trails)?;
         let mut palette = Palette::new();
         let too_many = || TooManyColours {
@@ -65,21 +100,30 @@ impl Renderer {
             Some(colour) => palette.insert(colour).ok_or_else(too_many)?,
             None => background,
         };
-        let mut styles = Vec::with_capacity(scene.balls.len());
+        // Ball by ball as before, so the palette's order (and the GIF's bytes) stay the
+        // same: a trail longer than its colour's table so far extends that table.
+        let mut tables: Vec<ShadeTable> = Vec::new();
+        let mut table_of: HashMap<Rgb, usize> = HashMap::new();
+        let mut uses = Vec::with_capacity(scene.balls.len());
         for spec in &scene.balls {
             let ball = palette.insert(spec.colour).ok_or_else(too_many)?;
-            let mut trail_shades = Vec::with_capacity(spec.trail * (spec.trail + 1) / 2);
-            for n in 1..=spec.trail {
-                for i in 0..n {
-                    let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
-                    let index = palette
-                        .insert(shade(spec.trail_colour, f))
-                        .ok_or_else(too_many)?;
-                    trail_shades.push(index);
-                }
-            }
-            styles.push(BallStyle { ball, trail_shades });
+            let table = *table_of.entry(spec.trail_colour).or_insert_with(|| {
+                tables.push(ShadeTable::default());
+                tables.len() - 1
+            });
+            tables[table]
+                .extend_to(spec.trail, spec.trail_colour, levels, &mut palette)
+                .ok_or_else(too_many)?;
+            uses.push((ball, table));
         }
+        let tables: Vec<Arc<[u8]>> = tables.into_iter().map(|t| t.shades.into()).collect();
+        let styles = uses
+            .into_iter()
+            .map(|(ball, table)| BallStyle {
+                ball,
+                trail_shades: Arc::clone(&tables[table]),
+            })
+            .collect();
         Ok(Renderer {
             width: scene.width,
             height: scene.height,
@@ -163,4 +207,56 @@ pub fn to_rgb(frame: &IndexedFrame, palette: &Palette) -> image::RgbImage {
     image::RgbImage::from_fn(frame.width(), frame.height(), |x, y| {
         image::Rgb(palette.rgb(frame.get_pixel(x, y)[0]))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::spec::BallSpec;
+
+    fn ball(trail_colour: Rgb, trail: usize) -> BallSpec {
+        BallSpec {
+            x: 50.0,
+            y: 50.0,
+            vx: 0.0,
+            vy: 0.0,
+            radius: 5.0,
+            colour: [255, 200, 60],
+            trail_colour,
+            trail,
+        }
+    }
+
+    #[test]
+    fn balls_of_one_trail_colour_share_a_table_that_gives_every_ball_its_exact_shades() {
+        let (blue, red) = ([60, 140, 255], [255, 90, 90]);
+        let scene = Scene {
+            balls: vec![ball(blue, 5), ball(red, 3), ball(blue, 2), ball(blue, 9)],
+            ..Scene::empty(100, 100)
+        };
+        let renderer = Renderer::new(&scene).unwrap();
+        for (spec, style) in scene.balls.iter().zip(&renderer.styles) {
+            for n in 1..=spec.trail {
+                for i in 0..n {
+                    let got = renderer.palette.rgb(style.trail_shade(i, n));
+                    let want = shade(spec.trail_colour, fade(i, n));
+                    assert_eq!(got, want, "trail {} dot {i} of {n}", spec.trail);
+                }
+            }
+        }
+        let styles = &renderer.styles;
+        assert!(Arc::ptr_eq(
+            &styles[0].trail_shades,
+            &styles[3].trail_shades
+        ));
+        assert!(!Arc::ptr_eq(
+            &styles[0].trail_shades,
+            &styles[1].trail_shades
+        ));
+        assert_eq!(
+            styles[3].trail_shades.len(),
+            9 * 10 / 2,
+            "sized by the longest trail"
+        );
+    }
 }

@@ -1,6 +1,7 @@
 //! Scene files (TOML) and the bundled presets, which are the files under `scenes/`
 //! compiled into the binary. Reading a file checks every key, type and range.
 
+use std::io::Read;
 use std::path::Path;
 
 use serde::Deserialize;
@@ -28,16 +29,20 @@ pub const PRESETS: &[(&str, &str)] = &[
 const BALL_COLOUR: Rgb = [255, 200, 60];
 const TRAIL_COLOUR: Rgb = [60, 140, 255];
 
+/// The most bytes a scene file may hold (1 MiB): far more than any hand-written scene, and
+/// a bound on what reading one costs (`[spawn]` makes crowds without long files).
+pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+
 /// A scene file that cannot be used: where, which key, and why, in one line.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneFileError {
     #[error("{file}: cannot read: {message}")]
     Read { file: String, message: String },
-    #[error("{file}: line {line}: key `{key}`: {message}")]
+    #[error("{file}: {}{message}", line.map_or(String::new(), |l| format!("line {l}: ")))]
     Parse {
         file: String,
-        line: usize,
-        key: String,
+        /// None where no one line is to blame (a key missing from the whole file).
+        line: Option<usize>,
         message: String,
     },
     #[error("{file}: {invalid}")]
@@ -51,13 +56,44 @@ pub fn preset_names() -> Vec<&'static str> {
     PRESETS.iter().map(|(name, _)| *name).collect()
 }
 
-/// Reads a scene file; `seed` drives any random spawning it asks for.
+/// Reads a scene file (`-`: standard input); `seed` drives any random spawning it asks for.
+/// Only a regular file or standard input, and at most [`MAX_SCENE_BYTES`] of it.
 pub fn load(path: &Path, seed: u64) -> Result<Scene, SceneFileError> {
-    let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| SceneFileError::Read {
+    let stdin = path.as_os_str() == "-";
+    let file = if stdin {
+        "standard input".to_string()
+    } else {
+        path.display().to_string()
+    };
+    let read_error = |message: String| SceneFileError::Read {
         file: file.clone(),
-        message: e.to_string(),
-    })?;
+        message,
+    };
+    let source: Box<dyn Read> = if stdin {
+        Box::new(std::io::stdin())
+    } else {
+        // Looked at before opening: opening a named pipe would wait for a writer.
+        let meta = std::fs::metadata(path).map_err(|e| read_error(e.to_string()))?;
+        if !meta.is_file() {
+            return Err(read_error(
+                "not a regular file (a scene is read from a file or from standard input, -)"
+                    .to_string(),
+            ));
+        }
+        Box::new(std::fs::File::open(path).map_err(|e| read_error(e.to_string()))?)
+    };
+    let mut bytes = Vec::new();
+    source
+        .take(MAX_SCENE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| read_error(e.to_string()))?;
+    if bytes.len() as u64 > MAX_SCENE_BYTES {
+        return Err(read_error(format!(
+            "longer than {} KiB, the most a scene file may be",
+            MAX_SCENE_BYTES >> 10
+        )));
+    }
+    let text = String::from_utf8(bytes).map_err(|_| read_error("not UTF-8 text".to_string()))?;
     parse(&file, &text, seed)
 }
 
@@ -75,13 +111,20 @@ pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
 
 /// Parses and validates scene-file text; `file` names it in errors.
 pub fn parse(file: &str, text: &str, seed: u64) -> Result<Scene, SceneFileError> {
-    let parse_error = |key: String, error: toml::de::Error| SceneFileError::Parse {
-        file: file.to_string(),
-        line: error
-            .span()
-            .map_or(1, |span| text[..span.start].matches('\n').count() + 1),
-        key,
-        message: error.message().replace('\n', " "),
+    let parse_error = |key: String, error: toml::de::Error| {
+        let span = error.span().unwrap_or(0..0);
+        let start = span.start.min(text.len());
+        let end = span.end.clamp(start, text.len());
+        let line = text[..start].matches('\n').count() + 1;
+        let line_text = text.lines().nth(line - 1).unwrap_or("");
+        let message = error.message().replace('\n', " ");
+        let whole_file = key.is_empty() || key == ".";
+        let missing = message.starts_with("missing field");
+        SceneFileError::Parse {
+            file: file.to_string(),
+            line: (!(whole_file && missing)).then_some(line),
+            message: plain_message(&message, &key, &text[start..end], line_text),
+        }
     };
     let deserializer =
         toml::Deserializer::parse(text).map_err(|e| parse_error(String::new(), e))?;
@@ -96,6 +139,57 @@ pub fn parse(file: &str, text: &str, seed: u64) -> Result<Scene, SceneFileError>
     let scene = raw.into_scene(seed).map_err(invalid)?;
     scene.validate().map_err(invalid)?;
     Ok(scene)
+}
+
+/// The TOML reader's message in the words of a scene file: keys (not fields) named as
+/// written, tables by their header, numbers (not Rust types). `key` is where it happened
+/// (`balls[0]`), `at` the text the reader points at, `line_text` that whole line.
+fn plain_message(message: &str, key: &str, at: &str, line_text: &str) -> String {
+    let within = match key {
+        "" | "." => String::new(),
+        key => format!(" in `{key}`"),
+    };
+    let quoted = |rest: &str| rest.split('`').nth(1).unwrap_or("").to_string();
+    if let Some(rest) = message.strip_prefix("missing field") {
+        return format!("missing key `{}`{within}", quoted(rest));
+    }
+    if let Some(rest) = message.strip_prefix("unknown field") {
+        let allowed = rest.split_once("expected ").map_or("", |(_, a)| a);
+        let allowed = allowed.trim_start_matches("one of ");
+        return format!(
+            "unknown key `{}`; the keys allowed here are {allowed}",
+            quoted(rest)
+        );
+    }
+    if message.starts_with("unclosed array table") || message.starts_with("unclosed table") {
+        let name: String = line_text
+            .trim_start()
+            .trim_start_matches('[')
+            .chars()
+            .take_while(|c| !matches!(c, ']' | '#' | '='))
+            .collect();
+        let (open, close) = if message.starts_with("unclosed array") {
+            ("[[", "]]")
+        } else {
+            ("[", "]")
+        };
+        return format!("unclosed {open}{}{close} table", name.trim());
+    }
+    if message.starts_with("duplicate key") && !at.is_empty() && !at.contains('\n') {
+        return format!("duplicate key `{}`", at.trim());
+    }
+    let plain = message
+        .replace("expected u8", "expected a whole number from 0 to 255")
+        .replace(
+            "expected u32",
+            "expected a whole number from 0 to 4294967295",
+        )
+        .replace("expected usize", "expected a whole number")
+        .replace("expected f64", "expected a number");
+    match key {
+        "" | "." => plain,
+        key => format!("key `{key}`: {plain}"),
+    }
 }
 
 #[derive(Deserialize)]

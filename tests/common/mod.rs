@@ -2,6 +2,8 @@
 //! that composites frames as a viewer does, and golden-image comparison.
 #![allow(dead_code)] // each test file uses its own subset
 
+pub mod process;
+
 use std::path::{Path, PathBuf};
 
 use bouncing_ball::render::{to_rgb, Renderer};

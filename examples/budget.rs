@@ -1,0 +1,99 @@
+//! Budget: the memory, time and GIF size the program predicts for a scene before running it,
+//! next to what the release binary measures (peak RSS and wall time from GNU time), for a
+//! few scenes from small to crowded. Shows how far the estimates can be trusted.
+//!
+//! Run: `cargo build --release && cargo run --release --example budget`. Needs GNU time at
+//! /usr/bin/time (skips the measurements without it). Writes only to a temporary folder.
+
+use std::path::Path;
+use std::process::Command;
+
+use bouncing_ball::budget::Estimate;
+use bouncing_ball::scene::file;
+
+/// Name, scene file text and extra flags.
+const SCENES: &[(&str, &str, &[&str])] = &[
+    ("lesson", "", &["--preset", "lesson"]),
+    ("elastic ×20k frames", "", &["--preset", "elastic", "--frames", "20000"]),
+    ("many", "", &["--preset", "many"]),
+    (
+        "8192² canvas, 3 frames",
+        "width = 8192\nheight = 8192\nframes = 3\n[[balls]]\nx = 100.0\ny = 100.0\nradius = 50.0\n",
+        &[],
+    ),
+    (
+        "2,000 balls × trail 1,000, 5 frames",
+        "width = 640\nheight = 480\nframes = 5\ngravity = [0.0, 0.5]\nwalls = { damping = 0.9 }\n[spawn]\ncount = 2000\nradius = 4.0\nmax_speed = 5.0\ntrail = 1000\ncolours = [[255, 200, 60]]\ntrail_colours = [[60, 140, 255], [255, 90, 90]]\n",
+        &[],
+    ),
+    (
+        "20,000 overlapping r=100, collisions, 3 frames",
+        "width = 400\nheight = 400\nframes = 3\nwalls = { damping = 0.9 }\nball_collisions = { restitution = 0.9 }\n[spawn]\ncount = 20000\nradius = 100.0\nmax_speed = 1.0\ntrail = 0\ncolours = [[255, 200, 60]]\ntrail_colours = [[60, 140, 255]]\n",
+        &[],
+    ),
+    (
+        "300,000 balls × trail 20, 10 frames",
+        "width = 1000\nheight = 1000\nframes = 10\nwalls = { damping = 0.9 }\n[spawn]\ncount = 300000\nradius = 2.0\nmax_speed = 3.0\ntrail = 20\ncolours = [[255, 200, 60]]\ntrail_colours = [[60, 140, 255]]\n",
+        &[],
+    ),
+];
+
+fn main() {
+    let bin = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/release/bouncing_ball");
+    let time = Path::new("/usr/bin/time");
+    let measure = bin.exists() && time.exists();
+    if !measure {
+        eprintln!("(no release binary or no /usr/bin/time: predictions only)");
+    }
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    println!("| scene | memory predicted | peak RSS | time predicted | wall time | GIF predicted | GIF |");
+    println!("|---|--:|--:|--:|--:|--:|--:|");
+    for (name, text, flags) in SCENES {
+        let scene_path = dir.path().join("scene.toml");
+        let mut args: Vec<String> = flags.iter().map(|s| s.to_string()).collect();
+        let scene = if text.is_empty() {
+            let preset = flags[1];
+            let mut scene = file::preset(preset, 1).expect("a preset");
+            if let Some(frames) = flags.get(3) {
+                scene.frames = frames.parse().expect("frames");
+            }
+            scene
+        } else {
+            std::fs::write(&scene_path, text).expect("write the scene");
+            args.extend(["--scene".into(), scene_path.display().to_string()]);
+            file::parse("scene.toml", text, 1).expect("a valid scene")
+        };
+        let estimate = Estimate::of(&scene);
+        let gif = dir.path().join("out.gif");
+        let (mut rss, mut wall, mut gif_bytes) = ("-".to_string(), "-".to_string(), "-".into());
+        if measure {
+            let output = Command::new(time)
+                .args(["-f", "%M %e"])
+                .arg(&bin)
+                .args(&args)
+                .args(["-q", "--memory-budget", "100000", "--gif"])
+                .arg(&gif)
+                .arg("--png")
+                .arg(dir.path().join("out.png"))
+                .output()
+                .expect("GNU time runs");
+            let stderr = String::from_utf8_lossy(&output.stderr);
+            let last = stderr.lines().last().unwrap_or("");
+            let mut fields = last.split_whitespace();
+            let kb: f64 = fields.next().and_then(|f| f.parse().ok()).unwrap_or(0.0);
+            rss = format!("{:.0} MB", kb / 1024.0);
+            wall = format!("{} s", fields.next().unwrap_or("?"));
+            gif_bytes = std::fs::metadata(&gif).map_or("-".into(), |m| mb(m.len() as f64));
+        }
+        println!(
+            "| {name} | {} | {rss} | {:.2} s | {wall} | {} | {gif_bytes} |",
+            mb(estimate.memory as f64),
+            estimate.seconds,
+            mb(estimate.gif_bytes),
+        );
+    }
+}
+
+fn mb(bytes: f64) -> String {
+    format!("{:.1} MB", bytes / 1048576.0)
+}

@@ -1,0 +1,535 @@
+//! Nothing clobbered, nothing left behind, every input bounded: the real binary given odd
+//! output paths, signals, huge scenes, overflowing numbers and odd scene files. Every path
+//! is inside the test's own temporary folder (FIFOs, sockets and links are made there).
+
+mod common;
+
+use std::io::Read;
+use std::os::unix::net::UnixListener;
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use common::decode_gif;
+use common::process::{args, changes, run_capped, send, snapshot, spawn, Caps, Finished};
+
+/// A run that ought to be refused before any work: it gets seconds, not minutes.
+fn quick() -> Caps {
+    Caps {
+        time: Duration::from_secs(10),
+        ..Caps::default()
+    }
+}
+
+/// Runs `list` in `dir` and asserts it exits `code` with one line containing `says`, and
+/// creates or changes nothing in `dir`.
+fn assert_refused(dir: &Path, list: &[&str], code: i32, says: &str) -> Finished {
+    let before = snapshot(dir);
+    let run = run_capped(dir, &args(list), b"", quick());
+    assert_eq!(run.code(), Some(code), "{list:?}: stderr {:?}", run.stderr);
+    assert!(
+        !run.capped,
+        "{list:?} ran until the cap: not refused up front"
+    );
+    assert_eq!(
+        run.stderr.lines().count(),
+        1,
+        "{list:?}: one line: {:?}",
+        run.stderr
+    );
+    assert!(
+        run.stderr.contains(says),
+        "{list:?}: {:?} should say {says:?}",
+        run.stderr
+    );
+    let changed = changes(&before, &snapshot(dir));
+    assert!(
+        changed.is_empty(),
+        "{list:?} created or changed {changed:?}"
+    );
+    run
+}
+
+/// A folder with a previous GIF and PNG, a scene file, a FIFO, a folder, a socket, and links
+/// to each.
+fn odd_folder() -> (tempfile::TempDir, UnixListener) {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path();
+    std::fs::write(p.join("previous.gif"), b"previous good gif").unwrap();
+    std::fs::write(p.join("previous.png"), b"previous good png").unwrap();
+    std::fs::copy(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lesson.toml"),
+        p.join("my.toml"),
+    )
+    .unwrap();
+    let fifo = std::ffi::CString::new(p.join("fifo").as_os_str().as_encoded_bytes()).unwrap();
+    // SAFETY: a valid C string naming a new path in our temporary folder.
+    assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o644) }, 0, "mkfifo");
+    std::fs::create_dir(p.join("folder")).unwrap();
+    let socket = UnixListener::bind(p.join("socket")).unwrap();
+    for target in ["fifo", "folder", "socket", "previous.gif"] {
+        std::os::unix::fs::symlink(target, p.join(format!("link-to-{target}"))).unwrap();
+    }
+    std::os::unix::fs::symlink("nothing", p.join("broken-link")).unwrap();
+    std::fs::hard_link(p.join("my.toml"), p.join("hard-link.toml")).unwrap();
+    (dir, socket)
+}
+
+#[test]
+fn an_output_that_is_not_a_regular_file_is_refused_before_any_work() {
+    let (dir, _socket) = odd_folder();
+    let long = ["--frames", "4000000000", "-q"];
+    for (flag, path, says) in [
+        ("--gif", "fifo", "is a named pipe (FIFO)"),
+        ("--png", "folder", "is a folder"),
+        ("--png", "folder/", "names a folder"),
+        ("--png", ".", "names a folder"),
+        ("--trace", "socket", "is a socket"),
+        ("--trace", "link-to-fifo", "is a named pipe (FIFO)"),
+        ("--gif", "link-to-folder", "is a folder"),
+        ("--png", "link-to-socket", "is a socket"),
+        ("--gif", "broken-link", "symbolic link to nothing"),
+        ("--gif", "-", "only for --trace"),
+        ("--png", "-", "only for --trace"),
+        ("--trace", "", "a value is required for '--trace <TRACE>'"),
+    ] {
+        let list: Vec<&str> = [flag, path].iter().chain(&long).copied().collect();
+        assert_refused(dir.path(), &list, 2, says);
+    }
+}
+
+#[test]
+fn two_outputs_naming_one_file_or_the_scene_file_are_refused() {
+    let (dir, _socket) = odd_folder();
+    for (list, says) in [
+        (
+            &["--gif", "o.gif", "--png", "o.gif"][..],
+            "same file as --gif o.gif",
+        ),
+        (
+            &["--gif", "o.gif", "--png", "./o.gif"],
+            "same file as --gif",
+        ),
+        (
+            &["--gif", "previous.gif", "--trace", "link-to-previous.gif"],
+            "same file",
+        ),
+        (
+            &["--scene", "my.toml", "--gif", "my.toml"],
+            "is the scene file",
+        ),
+        (
+            &["--scene", "my.toml", "--trace", "hard-link.toml"],
+            "is the scene file",
+        ),
+    ] {
+        let mut list = list.to_vec();
+        list.extend(["--frames", "4000000000", "-q"]);
+        assert_refused(dir.path(), &list, 2, says);
+    }
+}
+
+#[test]
+fn an_output_through_a_link_replaces_the_file_and_keeps_the_link() {
+    let (dir, _socket) = odd_folder();
+    let run = run_capped(
+        dir.path(),
+        &args(&[
+            "--gif",
+            "link-to-previous.gif",
+            "--png",
+            "p.png",
+            "-q",
+            "-n",
+            "3",
+        ]),
+        b"",
+        quick(),
+    );
+    assert_eq!(run.code(), Some(0), "{}", run.stderr);
+    let link = std::fs::symlink_metadata(dir.path().join("link-to-previous.gif")).unwrap();
+    assert!(link.file_type().is_symlink(), "the link is still a link");
+    assert_eq!(decode_gif(&dir.path().join("previous.gif")).frames.len(), 3);
+}
+
+#[test]
+fn trace_dash_streams_the_csv_to_stdout_and_a_closed_pipe_is_no_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = run_capped(dir.path(), &args(&["--trace", "-", "-q"]), b"", quick());
+    assert_eq!(run.code(), Some(0), "{}", run.stderr);
+    let csv = String::from_utf8(run.stdout).unwrap();
+    assert!(
+        csv.starts_with("frame,ball,x,y,vx,vy\n0,0,45.2,40.5,5.2,0.5\n"),
+        "{csv:.80}"
+    );
+    assert_eq!(csv.lines().count(), 201, "header and 200 rows");
+    assert!(!dir.path().join("-").exists(), "no file named -");
+
+    // `--trace - | head -1`: the reader goes away after one line.
+    let mut child = spawn(dir.path(), &args(&["--trace", "-", "-n", "3000"]), 3 << 30);
+    drop(child.stdin.take());
+    let mut stdout = child.stdout.take().unwrap();
+    let mut first = [0u8; 21];
+    stdout.read_exact(&mut first).unwrap();
+    drop(stdout);
+    let status = child.wait().unwrap();
+    let mut stderr = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut stderr)
+        .unwrap();
+    assert_eq!(&first, b"frame,ball,x,y,vx,vy\n");
+    assert_eq!(
+        status.code(),
+        Some(0),
+        "a closed pipe is no error: {stderr}"
+    );
+    assert!(
+        stderr.contains("wrote bouncing_ball.gif"),
+        "summary on stderr: {stderr}"
+    );
+    assert_eq!(
+        decode_gif(&dir.path().join("bouncing_ball.gif"))
+            .frames
+            .len(),
+        3000
+    );
+}
+
+#[test]
+fn a_png_path_that_is_a_folder_fails_before_the_work_and_the_old_gif_survives() {
+    let (dir, _socket) = odd_folder();
+    let list = [
+        "--preset",
+        "elastic",
+        "--frames",
+        "4000000000",
+        "--gif",
+        "previous.gif",
+    ];
+    let run = assert_refused(
+        dir.path(),
+        &[&list[..], &["--png", "folder"]].concat(),
+        2,
+        "is a folder",
+    );
+    assert!(run.elapsed < Duration::from_secs(10));
+}
+
+/// Starts a long run, waits for its temporary files, sends `signal`, and checks it stops
+/// with `code`, one line, no temporary file, and every earlier file as it was.
+fn assert_signal_stops_cleanly(signal: i32, code: i32, name: &str) {
+    let (dir, _socket) = odd_folder();
+    let before = snapshot(dir.path());
+    let list = args(&[
+        "--preset",
+        "elastic",
+        "--frames",
+        "4000000000",
+        "-q",
+        "--gif",
+        "previous.gif",
+        "--png",
+        "previous.png",
+        "--trace",
+        "new.csv",
+    ]);
+    let mut child = spawn(dir.path(), &list, 3 << 30);
+    child.stdout = None;
+    let started = Instant::now();
+    let temp_files = || {
+        std::fs::read_dir(dir.path())
+            .unwrap()
+            .filter(|e| {
+                e.as_ref()
+                    .unwrap()
+                    .file_name()
+                    .to_string_lossy()
+                    .ends_with(".tmp")
+            })
+            .count()
+    };
+    while temp_files() < 3 {
+        assert!(
+            started.elapsed() < Duration::from_secs(20),
+            "no temporary files appeared"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(300)); // some frames into the run
+    send(&child, signal);
+    let output = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(code), "{name}: {stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{name}: one line: {stderr}");
+    assert!(
+        stderr.contains(&format!("stopped by {name}"))
+            && stderr.contains("not written: previous.gif, previous.png, new.csv"),
+        "{stderr}"
+    );
+    assert_eq!(temp_files(), 0, "{name} left temporary files");
+    let changed = changes(&before, &snapshot(dir.path()));
+    assert!(changed.is_empty(), "{name} changed {changed:?}");
+}
+
+#[test]
+fn sigint_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
+    assert_signal_stops_cleanly(libc::SIGINT, 130, "SIGINT");
+}
+
+#[test]
+fn sigterm_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
+    assert_signal_stops_cleanly(libc::SIGTERM, 143, "SIGTERM");
+}
+
+#[test]
+fn sighup_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
+    assert_signal_stops_cleanly(libc::SIGHUP, 129, "SIGHUP");
+}
+
+/// A scene file of `count` balls spread over a `side`² box, each of `radius` with a trail of
+/// `trail`, in two trail colours.
+fn crowd(side: u32, count: usize, radius: f64, trail: usize, extra: &str) -> String {
+    format!(
+        "width = {side}\nheight = {side}\nframes = 2\nwalls = {{ damping = 0.9 }}\n{extra}\n\
+         [spawn]\ncount = {count}\nradius = {radius}\nmax_speed = 2.0\ntrail = {trail}\n\
+         colours = [[255, 200, 60]]\ntrail_colours = [[60, 140, 255], [255, 90, 90]]\n"
+    )
+}
+
+/// A cap well under what the scenes below used to need before the first frame (about 1 GB
+/// of trail shades; a 4 GiB list of pairs).
+const TIGHT: u64 = 512 << 20;
+
+#[test]
+fn two_thousand_balls_with_trails_of_a_thousand_run_within_a_tight_memory_cap() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("s.toml"), crowd(640, 2000, 3.0, 1000, "")).unwrap();
+    let caps = Caps {
+        memory: TIGHT,
+        ..quick()
+    };
+    let run = run_capped(dir.path(), &args(&["--scene", "s.toml", "-q"]), b"", caps);
+    assert_eq!(run.code(), Some(0), "{}", run.stderr);
+}
+
+#[test]
+fn twenty_thousand_overlapping_balls_with_collisions_stay_within_a_tight_memory_cap() {
+    let dir = tempfile::tempdir().unwrap();
+    let extra = "ball_collisions = { restitution = 0.9 }\nframes = 1";
+    let scene = crowd(201, 20_000, 100.0, 0, extra).replace("frames = 2\n", "");
+    std::fs::write(dir.path().join("s.toml"), scene).unwrap();
+    let caps = Caps {
+        memory: TIGHT,
+        time: Duration::from_secs(60),
+        ..Caps::default()
+    };
+    let run = run_capped(dir.path(), &args(&["--scene", "s.toml", "-q"]), b"", caps);
+    assert_eq!(run.code(), Some(0), "{}", run.stderr);
+}
+
+#[test]
+fn a_million_balls_with_long_trails_are_refused_up_front_naming_the_estimate_and_the_knob() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("s.toml"),
+        crowd(2000, 1_000_000, 2.0, 1000, ""),
+    )
+    .unwrap();
+    let run = assert_refused(dir.path(), &["--scene", "s.toml"], 2, "--memory-budget");
+    assert!(
+        run.stderr.contains("the scene needs about") && run.stderr.contains("MB of memory"),
+        "{}",
+        run.stderr
+    );
+}
+
+#[test]
+fn a_raised_memory_budget_is_checked_too() {
+    let dir = tempfile::tempdir().unwrap();
+    assert_refused(
+        dir.path(),
+        &["--memory-budget", "1", "--width", "4000"],
+        2,
+        "over the budget of 1 MB",
+    );
+}
+
+#[test]
+fn finite_inputs_that_overflow_stop_with_exit_2_naming_ball_frame_and_inputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let list = [
+        "--vy",
+        "1e308",
+        "--gravity",
+        "1e308",
+        "--damping",
+        "0",
+        "--trace",
+        "t.csv",
+    ];
+    let run = assert_refused(
+        dir.path(),
+        &list,
+        2,
+        "ball 0 left the finite numbers at frame 0",
+    );
+    assert!(
+        run.stderr.contains("vy 1e308") && run.stderr.contains("gravity [0.0, 1e308]"),
+        "names the inputs: {}",
+        run.stderr
+    );
+}
+
+#[test]
+fn a_scene_that_is_not_a_regular_file_or_is_too_long_is_refused() {
+    let (dir, _socket) = odd_folder();
+    for path in ["fifo", "folder", "link-to-fifo", "socket"] {
+        assert_refused(dir.path(), &["--scene", path], 2, "not a regular file");
+    }
+    let long = format!(
+        "width = 320\nheight = 240\n{}",
+        "# padding\n".repeat(120_000)
+    );
+    std::fs::write(dir.path().join("long.toml"), &long).unwrap();
+    assert_refused(
+        dir.path(),
+        &["--scene", "long.toml"],
+        2,
+        "longer than 1024 KiB",
+    );
+    let before = snapshot(dir.path());
+    let run = run_capped(
+        dir.path(),
+        &args(&["--scene", "-"]),
+        long.as_bytes(),
+        quick(),
+    );
+    assert_eq!(run.code(), Some(2), "{}", run.stderr);
+    assert!(
+        run.stderr
+            .contains("standard input: cannot read: longer than"),
+        "{}",
+        run.stderr
+    );
+    assert!(changes(&before, &snapshot(dir.path())).is_empty());
+}
+
+#[test]
+fn a_scene_on_standard_input_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene =
+        std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/many.toml")).unwrap();
+    let run = run_capped(
+        dir.path(),
+        &args(&["--scene", "-", "-q", "-n", "4"]),
+        &scene,
+        quick(),
+    );
+    assert_eq!(run.code(), Some(0), "{}", run.stderr);
+    assert_eq!(
+        decode_gif(&dir.path().join("bouncing_ball.gif"))
+            .frames
+            .len(),
+        4
+    );
+}
+
+#[test]
+fn unclear_messages_now_say_what_is_wrong_in_one_line() {
+    let (dir, _socket) = odd_folder();
+    std::fs::write(dir.path().join("no-height.toml"), "width = 320\n").unwrap();
+    std::fs::write(
+        dir.path().join("unclosed.toml"),
+        "width = 320\nheight = 240\n[[balls\nx = 1\n",
+    )
+    .unwrap();
+    assert_refused(
+        dir.path(),
+        &["--png", "folder/"],
+        2,
+        "--png folder/: names a folder, not a file",
+    );
+    assert_refused(
+        dir.path(),
+        &["--png", "."],
+        2,
+        "--png .: names a folder, not a file",
+    );
+    assert_refused(
+        dir.path(),
+        &["--scene", "no-height.toml"],
+        2,
+        "no-height.toml: missing key `height`",
+    );
+    assert_refused(
+        dir.path(),
+        &["--scene", "unclosed.toml"],
+        2,
+        "unclosed.toml: line 3: unclosed [[balls]] table",
+    );
+    assert_refused(
+        dir.path(),
+        &["--frames", "ten"],
+        2,
+        "invalid value 'ten' for '--frames <FRAMES>'",
+    );
+    assert_refused(
+        dir.path(),
+        &["--png", "no/such/folder/x.png"],
+        1,
+        "there is no folder no/such/folder",
+    );
+}
+
+#[test]
+fn a_short_frame_delay_and_an_empty_scene_draw_warnings_not_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("empty.toml"),
+        "width = 320\nheight = 240\nframes = 2\n",
+    )
+    .unwrap();
+    for (list, warns) in [
+        (
+            &["--frame-ms", "0", "-n", "2"][..],
+            "warning: --frame-ms 0: browsers show frames shorter than 20 ms",
+        ),
+        (&["--frame-ms", "10", "-n", "2"], "warning: --frame-ms 10"),
+        (
+            &["--scene", "empty.toml"],
+            "warning: the scene has no balls",
+        ),
+        (&["-n", "3000000"], "warning: this run looks to take about"),
+    ] {
+        let mut child = spawn(dir.path(), &args(list), 3 << 30);
+        let mut line = String::new();
+        let mut stderr = child.stderr.take().unwrap();
+        let mut byte = [0u8];
+        while stderr.read(&mut byte).unwrap() == 1 && byte[0] != b'\n' {
+            line.push(byte[0] as char);
+        }
+        assert!(
+            line.starts_with(warns),
+            "{list:?}: first stderr line {line:?}"
+        );
+        send(&child, libc::SIGINT); // the long one need not finish
+        let status = child.wait().unwrap();
+        assert!(
+            matches!(status.code(), Some(0 | 130)),
+            "{list:?}: {status:?}"
+        );
+    }
+    let quiet = run_capped(
+        dir.path(),
+        &args(&["--frame-ms", "0", "-n", "2", "-q"]),
+        b"",
+        quick(),
+    );
+    assert!(
+        quiet.stderr.is_empty(),
+        "--quiet silences warnings: {}",
+        quiet.stderr
+    );
+}
