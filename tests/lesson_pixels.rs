@@ -35,12 +35,10 @@ fn every_frame_of_our_gifs_equals_the_lesson_scripts_frame() {
         } else {
             scene_file::preset(name, 1).unwrap()
         };
-        let outputs = Outputs {
-            gif: dir.path().join(format!("{name}.gif")),
-            png: dir.path().join(format!("{name}.png")),
-            trace: None,
-            progress: false,
-        };
+        let outputs = Outputs::new(
+            dir.path().join(format!("{name}.gif")),
+            dir.path().join(format!("{name}.png")),
+        );
         run(&scene, &outputs).unwrap();
         let ours: Vec<u32> = decode_gif(&outputs.gif)
             .frames

@@ -417,6 +417,27 @@ fn a_scene_that_is_not_a_regular_file_or_is_too_long_is_refused() {
 }
 
 #[test]
+fn shapes_far_off_the_canvas_cost_nothing_to_draw() {
+    // A ball thrown 3e9 px a frame with no walls, a ball pulled sideways for 100,000 frames,
+    // and a floor from −1e30 to 1e30: once each hung the renderer in integer arithmetic.
+    for scene in [
+        "width = 320\nheight = 240\nframes = 3\n[[balls]]\nx = 40.0\ny = 40.0\nvx = 3e9\nradius = 12.0\n",
+        "width = 32\nheight = 24\nframes = 100000\ngravity = [0.5, 0.0]\n[[balls]]\nx = 4.0\ny = 4.0\nradius = 2.0\ntrail = 0\n",
+        "width = 320\nheight = 240\nframes = 3\nwalls = { damping = 1.0 }\n[[floors]]\nfrom = [-1e30, 120.0]\nto = [1e30, 120.0]\ndamping = 1.0\n[[balls]]\nx = 40.0\ny = 40.0\nradius = 12.0\n",
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let run = run_capped(
+            dir.path(),
+            &args(&["--scene", "-", "-q"]),
+            scene.as_bytes(),
+            quick(),
+        );
+        assert!(!run.capped, "still drawing after the cap: {scene}");
+        assert_eq!(run.code(), Some(0), "{scene}: {}", run.stderr);
+    }
+}
+
+#[test]
 fn a_scene_on_standard_input_runs() {
     let dir = tempfile::tempdir().unwrap();
     let scene =

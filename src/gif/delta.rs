@@ -5,7 +5,7 @@
 
 use std::ops::Range;
 
-use crate::render::raster::IndexedFrame;
+use crate::render::IndexedFrame;
 
 /// A rectangle of a frame, px from the top-left corner.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -17,7 +17,7 @@
 //! Only what is on the canvas costs anything: a circle whose box misses the canvas is
 //! dismissed in floating point, before any conversion to integers, and each row is clipped.
 
-use super::raster::IndexedFrame;
+use super::palette::IndexedFrame;
 
 /// Circles this wide or wider are not drawn. A scene's radius is under half its canvas side
 /// (at most 8,192 px), so this is never reached; it keeps the trace's sums of products

@@ -10,6 +10,7 @@ pub mod palette;
 pub mod png;
 pub mod raster;
 
+pub use palette::IndexedFrame;
 pub use palette::Palette;
 pub use png::write_png;
-pub use raster::{to_rgb, IndexedFrame, Renderer};
+pub use raster::{to_rgb, Renderer};

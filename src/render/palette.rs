@@ -11,6 +11,9 @@ use std::fmt;
 
 use crate::scene::spec::Rgb;
 
+/// A frame as indices into the palette, one byte per pixel.
+pub type IndexedFrame = image::GrayImage;
+
 /// How many colours a GIF colour table holds.
 pub const MAX_COLOURS: usize = 256;
 

@@ -4,8 +4,9 @@ use std::io::{self, Write};
 
 use image::ImageEncoder;
 
+use super::palette::IndexedFrame;
 use super::palette::Palette;
-use super::raster::{to_rgb, IndexedFrame};
+use super::raster::to_rgb;
 
 /// Writes `frame` as an RGB PNG.
 pub fn write_png(out: impl Write, frame: &IndexedFrame, palette: &Palette) -> io::Result<()> {

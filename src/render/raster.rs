@@ -11,13 +11,12 @@ use image::{GrayImage, Luma};
 use imageproc::drawing::draw_line_segment_mut;
 
 use super::ellipse::fill_circle;
-use super::palette::{fade, fade_levels, quantised_fade, shade, Palette, TooManyColours};
+use super::palette::{
+    fade, fade_levels, quantised_fade, shade, IndexedFrame, Palette, TooManyColours,
+};
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
 use crate::scene::spec::{Rgb, Scene};
-
-/// A frame as palette indices, one byte per pixel.
-pub type IndexedFrame = GrayImage;
 
 /// Draws a scene's balls with the scene's colours.
 #[derive(Clone, Debug)]
