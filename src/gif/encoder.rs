@@ -1,8 +1,10 @@
 //! The animated GIF from indexed frames. Knows frames and palettes, nothing of balls.
 //!
-//! The GIF is written for size and speed without losing a pixel. After the first frame,
-//! each frame is only the rectangle that changed ([`super::delta`]), laid over the last one
-//! (disposal Keep). Frames wait in a queue of bounded size; a full queue is compressed on
+//! The GIF is written for size and speed without losing a pixel. The colour table holds
+//! only the scene's colours (padded to a power of two, as GIF requires). After the first
+//! frame, each frame is only the rectangle that changed ([`super::delta`]), laid over the
+//! last one (disposal Keep), written in whichever of a few encodings is smallest
+//! ([`super::cheapest`]). Frames wait in a queue of bounded size; a full queue is encoded on
 //! every core at once (rayon) and written in order, so memory stays flat however many
 //! frames a run has, and the queue's buffers serve the whole run.
 
@@ -12,12 +14,14 @@ use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 
+use super::cheapest::{Coder, Encoding};
 use super::delta::{changed_rect, crop, paste, Rect};
-use super::lzw::{min_code_size, Lzw};
 use crate::render::palette::Palette;
 use crate::render::IndexedFrame;
 
 /// The most pixels the queue holds (unless a single frame is bigger): what bounds memory.
+/// Each queued pixel takes about three bytes: its index, the index beneath it, and its share
+/// of the compressed data.
 pub const QUEUE_PIXELS: usize = 4 << 20;
 /// The most frames the queue holds: plenty to keep every core busy.
 pub const MAX_QUEUED_FRAMES: usize = 32;
@@ -35,10 +39,11 @@ pub struct GifWriter<W: Write> {
     width: u32,
     height: u32,
     delay_cs: u16,
-    /// LZW's starting code size, set by the colour table's size.
-    code_size: u8,
-    /// One LZW coder per thread that compresses, each kept for the whole run.
-    coders: Vec<Lzw>,
+    /// How many entries the colour table has, a power of two: the indices free to mean
+    /// transparent lie below it.
+    table_len: usize,
+    /// One coder per thread that compresses, each kept for the whole run.
+    coders: Vec<Coder>,
     /// What a viewer shows after the frames written so far (None before the first).
     shown: Option<IndexedFrame>,
     queue: Vec<Queued>,
@@ -46,12 +51,17 @@ pub struct GifWriter<W: Write> {
     timings: EncodeTimings,
 }
 
-/// One frame waiting in the queue: what to write where, and its compressed bytes.
+/// One frame waiting in the queue: what to write where, what lies beneath it, and its
+/// compressed bytes once encoded.
 #[derive(Default)]
 struct Queued {
     rect: Rect,
     pixels: Vec<u8>,
+    /// What the viewer shows under `rect` before this frame; empty for the first frame.
+    beneath: Vec<u8>,
     lzw: Vec<u8>,
+    /// How `lzw` was encoded: what the frame's header must say.
+    encoding: Encoding,
 }
 
 /// Where a GIF writer's time went, summed over the frames so far (wall-clock).
@@ -59,7 +69,7 @@ struct Queued {
 pub struct EncodeTimings {
     /// Finding each frame's changed rectangle and copying it out.
     pub changes: Duration,
-    /// LZW compression, every core at once.
+    /// Choosing each frame's cheapest encoding (several LZW compressions), every core at once.
     pub lzw: Duration,
     /// Handing the compressed frames to the output.
     pub write: Duration,
@@ -97,14 +107,14 @@ impl<W: Write> GifWriter<W> {
             .map(|_| Queued::default())
             .collect();
         let coders = (0..rayon::current_num_threads().min(queue.len()))
-            .map(|_| Lzw::new())
+            .map(|_| Coder::default())
             .collect();
         Ok(GifWriter {
             encoder,
             width: width.into(),
             height: height.into(),
             delay_cs,
-            code_size: min_code_size(palette.colours().len()),
+            table_len: palette.colours().len().next_power_of_two().max(2),
             coders,
             shown: None,
             queue,
@@ -132,12 +142,14 @@ impl<W: Write> GifWriter<W> {
         match &mut self.shown {
             None => {
                 slot.rect = Rect::whole(frame);
+                slot.beneath.clear();
                 self.shown = Some(frame.clone());
             }
             Some(shown) => {
                 let changed = changed_rect(shown, frame);
                 // An unchanged frame is still written, as one pixel, so it keeps its time.
                 slot.rect = changed.unwrap_or(Rect::corner());
+                crop(shown, slot.rect, &mut slot.beneath);
                 if let Some(changed) = changed {
                     paste(frame, changed, shown);
                 }
@@ -152,19 +164,27 @@ impl<W: Write> GifWriter<W> {
         Ok(())
     }
 
-    /// Compresses every queued frame, all cores at once, and writes them in order.
+    /// Encodes every queued frame, all cores at once, and writes them in order.
     pub fn flush(&mut self) -> io::Result<()> {
         let queue = &mut self.queue[..self.queued];
         let started = Instant::now();
-        let code_size = self.code_size;
+        let table_len = self.table_len;
         // Each coder takes an equal run of the queue, so each keeps its table hot.
         let per_coder = queue.len().div_ceil(self.coders.len()).max(1);
         queue
             .par_chunks_mut(per_coder)
             .zip(self.coders.par_iter_mut())
-            .for_each(|(frames, lzw)| {
+            .for_each(|(frames, coder)| {
                 for frame in frames {
-                    lzw.compress(code_size, &frame.pixels, &mut frame.lzw);
+                    let beneath = (!frame.beneath.is_empty()).then_some(&frame.beneath[..]);
+                    let width = frame.rect.width as usize;
+                    frame.encoding = coder.encode_cheapest(
+                        &frame.pixels,
+                        width,
+                        beneath,
+                        table_len,
+                        &mut frame.lzw,
+                    );
                 }
             });
         let compressed = Instant::now();
@@ -177,6 +197,8 @@ impl<W: Write> GifWriter<W> {
                 height: rect.height as u16,
                 delay: self.delay_cs,
                 dispose: gif::DisposalMethod::Keep,
+                transparent: queued.encoding.transparent,
+                interlaced: queued.encoding.interlaced,
                 buffer: Cow::Borrowed(&queued.lzw),
                 ..gif::Frame::default()
             };
