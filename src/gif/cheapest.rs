@@ -4,7 +4,8 @@
 //!
 //! First the layouts, each with the plain LZW coder:
 //! - the changed rectangle as it is, or with its mixed stretches of unchanged pixels
-//!   transparent ([`super::transparency`]), when an index is free to mean that;
+//!   transparent ([`super::transparency`]), when an index is free to mean that and the
+//!   marking leaves fewer runs of one index (else it cannot lengthen runs, and is skipped);
 //! - each in normal or interlaced row order ([`super::interlace`]).
 //!
 //! Then the winning layout once more with a [`SMALL_DICTIONARY`], when its first coding used
@@ -73,7 +74,9 @@ impl Coder {
                 }
                 Some((under, index)) => {
                     // Nothing marked is the layout already tried.
-                    if mark_mixed_stretches(current, under, index, &mut self.layout) == 0 {
+                    if mark_mixed_stretches(current, under, index, &mut self.layout) == 0
+                        || runs(&self.layout) >= runs(current)
+                    {
                         continue;
                     }
                     largest(&self.layout).max(index)
@@ -116,6 +119,11 @@ impl Coder {
         }
         chosen
     }
+}
+
+/// How many runs of one index `pixels` holds.
+fn runs(pixels: &[u8]) -> usize {
+    1 + pixels.windows(2).filter(|pair| pair[0] != pair[1]).count()
 }
 
 /// The largest index in `pixels` (0 for none).
