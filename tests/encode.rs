@@ -5,9 +5,12 @@ mod common;
 
 use std::path::Path;
 
+use bouncing_ball::gif::cheapest::SMALL_DICTIONARY;
 use bouncing_ball::gif::delta::{changed_rect, Rect};
 use bouncing_ball::gif::encoder::{queue_frames, GifWriter, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
-use bouncing_ball::gif::lzw::Lzw;
+use bouncing_ball::gif::interlace::interlace;
+use bouncing_ball::gif::lzw::{min_code_size, Choices, Lzw};
+use bouncing_ball::gif::transparency::{mark_mixed_stretches, transparent_index};
 use bouncing_ball::render::palette::Palette;
 use bouncing_ball::render::IndexedFrame;
 use bouncing_ball::render::Renderer;
@@ -237,7 +240,13 @@ fn lzw_writes_the_gif_crates_own_bytes_while_the_dictionary_has_room() {
             let pixels: Vec<u8> = (0..len)
                 .map(|_| (random.next_u64() % colours) as u8)
                 .collect();
-            lzw.compress(gif_code_size(&pixels), &pixels, &mut ours);
+            lzw.compress(
+                gif_code_size(&pixels),
+                &pixels,
+                Choices::GREEDY,
+                usize::MAX,
+                &mut ours,
+            );
             let mut frame = gif::Frame {
                 width: len as u16,
                 height: 1,
@@ -251,4 +260,130 @@ fn lzw_writes_the_gif_crates_own_bytes_while_the_dictionary_has_room() {
             );
         }
     }
+}
+
+/// Wraps LZW data for one `width` x `height` image into a GIF and decodes its indices.
+fn decode_lzw(width: u16, height: u16, colours: usize, data: &[u8]) -> Vec<u8> {
+    let table = vec![0u8; 3 * colours.next_power_of_two().max(2)];
+    let mut encoder = gif::Encoder::new(Vec::new(), width, height, &table).unwrap();
+    let frame = gif::Frame {
+        width,
+        height,
+        buffer: data.into(),
+        ..gif::Frame::default()
+    };
+    encoder.write_lzw_pre_encoded_frame(&frame).unwrap();
+    let bytes = encoder.into_inner().unwrap();
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::Indexed);
+    let mut decoder = options.read_info(&bytes[..]).unwrap();
+    decoder
+        .read_next_frame()
+        .unwrap()
+        .expect("one frame")
+        .buffer
+        .to_vec()
+}
+
+#[test]
+fn lzw_with_a_small_dictionary_decodes_to_the_same_indices_for_every_code_size() {
+    let mut random = Random::new(9);
+    let mut lzw = Lzw::new();
+    let mut data = Vec::new();
+    for colours in [2, 3, 5, 16, 129, 256] {
+        let frame = random_frame(200, 150, colours, &mut random);
+        let code_size = min_code_size(colours);
+        let small = SMALL_DICTIONARY;
+        let most = lzw.compress(code_size, frame.as_raw(), small, usize::MAX, &mut data);
+        assert_eq!(
+            most,
+            Some(small.max_codes),
+            "{colours} colours: the small dictionary fills, and is cleared, at its size"
+        );
+        let decoded = decode_lzw(200, 150, colours, &data);
+        assert!(
+            decoded == *frame.as_raw(),
+            "{colours} colours: decoded indices differ"
+        );
+    }
+}
+
+#[test]
+fn lzw_gives_up_once_its_output_reaches_the_budget() {
+    let frame = random_frame(100, 100, 16, &mut Random::new(3));
+    let (mut lzw, mut data) = (Lzw::new(), Vec::new());
+    let whole = lzw.compress(4, frame.as_raw(), Choices::GREEDY, usize::MAX, &mut data);
+    let size = data.len();
+    assert!(whole.is_some(), "no budget, no giving up");
+    let cut = lzw.compress(4, frame.as_raw(), Choices::GREEDY, size, &mut data);
+    assert_eq!(
+        cut, None,
+        "a budget of its own size ({size} B) is not enough"
+    );
+    let again = lzw.compress(4, frame.as_raw(), Choices::GREEDY, size + 1, &mut data);
+    assert_eq!(
+        (again, data.len()),
+        (whole, size),
+        "one byte more is enough, and the coder starts clean after giving up"
+    );
+}
+
+#[test]
+fn interlaced_order_is_every_eighth_row_then_every_fourth_then_every_second_then_the_rest() {
+    let rows: Vec<u8> = (0..10).flat_map(|row| [row, row]).collect();
+    let mut out = Vec::new();
+    interlace(&rows, 2, &mut out);
+    let order: Vec<u8> = out.chunks(2).map(|row| row[0]).collect();
+    assert_eq!(order, [0, 8, 4, 2, 6, 1, 3, 5, 7, 9]);
+}
+
+#[test]
+fn only_unchanged_stretches_of_more_than_one_colour_become_transparent() {
+    // Changed pixels are where `now` and `before` differ: columns 2 and 7.
+    let before = [1, 1, 5, 3, 3, 4, 4, 9, 2, 2];
+    let now = [1, 1, 6, 3, 3, 4, 4, 8, 2, 2];
+    let mut out = Vec::new();
+    let marked = mark_mixed_stretches(&now, &before, 0, &mut out);
+    // 1 1 is one colour: kept. 3 3 4 4 mixes two: transparent. 2 2 is one colour: kept.
+    assert_eq!(out, [1, 1, 6, 0, 0, 0, 0, 8, 2, 2]);
+    assert_eq!(marked, 4);
+}
+
+#[test]
+fn the_transparent_index_is_the_lowest_that_no_changed_pixel_uses() {
+    let before = [0, 1, 2, 3];
+    let now = [0, 0, 1, 3];
+    // Changed pixels use 0 and 1; 2 and 3 appear only unchanged, so 2 is free.
+    assert_eq!(transparent_index(&now, &before, 4), Some(2));
+    assert_eq!(
+        transparent_index(&[0, 1], &[1, 0], 2),
+        None,
+        "changed pixels use the whole table"
+    );
+}
+
+#[test]
+fn the_gif_is_the_same_bytes_on_one_thread_and_on_four() {
+    let dir = tempfile::tempdir().unwrap();
+    let render = |threads: &str| {
+        let gif = dir.path().join(format!("{threads}.gif"));
+        let status = std::process::Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
+            .args([
+                "--preset",
+                "billiards",
+                "--frames",
+                "40",
+                "--quiet",
+                "--gif",
+            ])
+            .arg(&gif)
+            .arg("--png")
+            .arg(dir.path().join(format!("{threads}.png")))
+            .env("RAYON_NUM_THREADS", threads)
+            .status()
+            .unwrap();
+        assert!(status.success());
+        std::fs::read(gif).unwrap()
+    };
+    assert!(render("1") == render("4"), "the bytes differ");
 }

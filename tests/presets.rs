@@ -2,10 +2,13 @@
 //! now, byte for byte, so they cannot go stale. Regenerate on purpose:
 //! `UPDATE_GOLDEN=1 cargo test --test presets`.
 
+mod common;
+
 use std::path::Path;
 
 use bouncing_ball::scene::file::{self as scene_file, PRESETS};
 use bouncing_ball::{run, Outputs};
+use common::{decode_gif, render_frames};
 
 #[test]
 fn every_preset_gif_in_scenes_matches_a_fresh_render_byte_for_byte() {
@@ -32,4 +35,23 @@ fn every_preset_gif_in_scenes_matches_a_fresh_render_byte_for_byte() {
         stale.is_empty(),
         "these preset GIFs differ from a fresh render: {stale:?}. If the change is intended, regenerate: UPDATE_GOLDEN=1 cargo test --test presets"
     );
+}
+
+#[test]
+fn every_frame_of_every_committed_preset_gif_shows_what_the_renderer_drew() {
+    // While the test above rewrites the GIFs, they are checked on the next plain run.
+    if std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1") {
+        return;
+    }
+    for (name, _) in PRESETS {
+        let scene = scene_file::preset(name, 1).unwrap();
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.gif"));
+        let decoded = decode_gif(&path);
+        let rendered = render_frames(&scene);
+        assert_eq!(decoded.frames.len(), rendered.len(), "{name}: frame count");
+        for (n, (shown, drawn)) in decoded.frames.iter().zip(&rendered).enumerate() {
+            let wrong = shown.pixels().zip(drawn.pixels()).filter(|(a, b)| a != b);
+            assert_eq!(wrong.count(), 0, "{name}, frame {n}: pixels differ");
+        }
+    }
 }

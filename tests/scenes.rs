@@ -320,3 +320,34 @@ fn the_lesson_trail_fits_with_every_exact_shade() {
         "the faintest exact lesson shade is present"
     );
 }
+
+#[test]
+fn the_lesson_palette_leaves_out_the_trail_shade_the_ball_always_covers() {
+    // A trail's newest dot is the ball's own circle at fade 1, drawn over by the ball: its
+    // shade, the full trail colour, is never seen. The rest fit 128 entries (7-bit codes).
+    let renderer = Renderer::new(&lesson_scene()).unwrap();
+    let colours = renderer.palette().colours();
+    assert!(
+        !colours.contains(&[60, 140, 255]),
+        "the full trail colour is never visible"
+    );
+    assert_eq!(colours.len(), 128, "background, ball and 126 trail shades");
+}
+
+#[test]
+fn once_the_lesson_trail_has_grown_every_frame_uses_only_indices_below_32() {
+    // Background, ball and the 19 shades a full 20-point trail draws come first in the
+    // table, so those frames are coded with 5-bit indices.
+    let scene = lesson_scene();
+    let renderer = Renderer::new(&scene).unwrap();
+    let mut simulation = scene.simulation();
+    let mut frame = renderer.new_frame();
+    for n in 0..scene.frames {
+        simulation.step();
+        renderer.draw(simulation.balls(), &mut frame);
+        let largest = frame.as_raw().iter().copied().max().unwrap();
+        if n >= 19 {
+            assert!(largest < 32, "frame {n} uses index {largest}");
+        }
+    }
+}

@@ -4,7 +4,7 @@
 //! Run: `cargo bench --bench pipeline` (about 15 s; add `-- --warm-up-time 1
 //! --measurement-time 3` for a quicker look).
 
-use bouncing_ball::gif::lzw::{min_code_size, Lzw};
+use bouncing_ball::gif::lzw::{min_code_size, Choices, Lzw};
 use bouncing_ball::gif::GifWriter;
 use bouncing_ball::physics::simulation::Simulation;
 use bouncing_ball::render::{IndexedFrame, Renderer};
@@ -65,7 +65,15 @@ fn pipeline(c: &mut Criterion) {
     let code_size = min_code_size(renderer.palette().colours().len());
     let (mut lzw, mut out) = (Lzw::new(), Vec::new());
     group.bench_function("compress one whole frame (LZW)", |b| {
-        b.iter(|| lzw.compress(code_size, frame.as_raw(), &mut out))
+        b.iter(|| {
+            lzw.compress(
+                code_size,
+                frame.as_raw(),
+                Choices::GREEDY,
+                usize::MAX,
+                &mut out,
+            )
+        })
     });
 
     group.throughput(Throughput::Elements(u64::from(scene.frames)));

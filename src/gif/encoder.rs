@@ -1,23 +1,31 @@
 //! The animated GIF from indexed frames. Knows frames and palettes, nothing of balls.
 //!
-//! The GIF is written for size and speed without losing a pixel. After the first frame,
-//! each frame is only the rectangle that changed ([`super::delta`]), laid over the last one
-//! (disposal Keep). Frames wait in a queue of bounded size; a full queue is compressed on
-//! every core at once (rayon) and written in order, so memory stays flat however many
-//! frames a run has, and the queue's buffers serve the whole run.
+//! The GIF is written for size and speed without losing a pixel. The colour table holds
+//! only the scene's colours (padded to a power of two, as GIF requires). After the first
+//! frame, each frame is only the rectangle that changed ([`super::delta`]), laid over the
+//! last one (disposal Keep), written in whichever of a few encodings is smallest
+//! ([`super::cheapest`]). Frames wait in a queue of bounded size; a full queue goes to a
+//! background thread that encodes it on every core at once (rayon) while the caller draws
+//! and queues the next frames, and comes back to be written in order. Two queues take turns,
+//! so memory stays flat however many frames a run has, and their buffers serve the whole run.
 
 use std::borrow::Cow;
 use std::io::{self, Write};
+use std::mem::take;
+use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
+use std::thread;
 use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 
+use super::cheapest::{Coder, Encoding};
 use super::delta::{changed_rect, crop, paste, Rect};
-use super::lzw::{min_code_size, Lzw};
 use crate::render::palette::Palette;
 use crate::render::IndexedFrame;
 
-/// The most pixels the queue holds (unless a single frame is bigger): what bounds memory.
+/// The most pixels a queue holds (unless a single frame is bigger): what bounds memory.
+/// Each queued pixel takes about three bytes: its index, the index beneath it, and its share
+/// of the compressed data; two queues take turns (one filling, one being encoded).
 pub const QUEUE_PIXELS: usize = 4 << 20;
 /// The most frames the queue holds: plenty to keep every core busy.
 pub const MAX_QUEUED_FRAMES: usize = 32;
@@ -35,23 +43,83 @@ pub struct GifWriter<W: Write> {
     width: u32,
     height: u32,
     delay_cs: u16,
-    /// LZW's starting code size, set by the colour table's size.
-    code_size: u8,
-    /// One LZW coder per thread that compresses, each kept for the whole run.
-    coders: Vec<Lzw>,
-    /// What a viewer shows after the frames written so far (None before the first).
+    /// What a viewer shows after the frames queued so far (None before the first).
     shown: Option<IndexedFrame>,
-    queue: Vec<Queued>,
-    queued: usize,
+    /// The batch being filled; its coders are here while no batch is being encoded.
+    filling: Batch,
+    /// The other batch's frames and coders while it is being encoded, or back and spare.
+    spare: Option<Batch>,
+    /// Whether a batch is with the encoding thread now.
+    in_flight: bool,
+    to_encoder: SyncSender<Batch>,
+    from_encoder: Receiver<Batch>,
     timings: EncodeTimings,
 }
 
-/// One frame waiting in the queue: what to write where, and its compressed bytes.
+/// Frames on their way through the encoder, and the coders that encode them (one per core,
+/// each kept for the whole run).
+#[derive(Default)]
+struct Batch {
+    frames: Vec<Queued>,
+    queued: usize,
+    coders: Vec<Coder>,
+    /// How many entries the colour table has, a power of two: the indices free to mean
+    /// transparent lie below it.
+    table_len: usize,
+    /// How long encoding it took.
+    took: Duration,
+}
+
+impl Batch {
+    /// Encodes every queued frame, all cores at once.
+    fn encode(&mut self) {
+        let started = Instant::now();
+        let table_len = self.table_len;
+        let frames = &mut self.frames[..self.queued];
+        // Each coder takes an equal run of the queue, so each keeps its table hot.
+        let per_coder = frames.len().div_ceil(self.coders.len()).max(1);
+        frames
+            .par_chunks_mut(per_coder)
+            .zip(self.coders.par_iter_mut())
+            .for_each(|(frames, coder)| {
+                for frame in frames {
+                    let beneath = (!frame.beneath.is_empty()).then_some(&frame.beneath[..]);
+                    let width = frame.rect.width as usize;
+                    frame.encoding = coder.encode_cheapest(
+                        &frame.pixels,
+                        width,
+                        beneath,
+                        table_len,
+                        &mut frame.lzw,
+                    );
+                }
+            });
+        self.took = started.elapsed();
+    }
+}
+
+/// The encoding thread's loop: a batch in, the same batch encoded back out, until the
+/// writer is gone.
+fn encode_batches(batches: Receiver<Batch>, done: SyncSender<Batch>) {
+    for mut batch in batches {
+        batch.encode();
+        if done.send(batch).is_err() {
+            break;
+        }
+    }
+}
+
+/// One frame waiting in the queue: what to write where, what lies beneath it, and its
+/// compressed bytes once encoded.
 #[derive(Default)]
 struct Queued {
     rect: Rect,
     pixels: Vec<u8>,
+    /// What the viewer shows under `rect` before this frame; empty for the first frame.
+    beneath: Vec<u8>,
     lzw: Vec<u8>,
+    /// How `lzw` was encoded: what the frame's header must say.
+    encoding: Encoding,
 }
 
 /// Where a GIF writer's time went, summed over the frames so far (wall-clock).
@@ -59,10 +127,16 @@ struct Queued {
 pub struct EncodeTimings {
     /// Finding each frame's changed rectangle and copying it out.
     pub changes: Duration,
-    /// LZW compression, every core at once.
+    /// Choosing each frame's cheapest encoding (several LZW compressions), every core at once,
+    /// on the encoding thread (mostly while the caller draws the next frames).
     pub lzw: Duration,
     /// Handing the compressed frames to the output.
     pub write: Duration,
+}
+
+/// The encoding thread stopped (it panicked): nothing more can be written.
+fn encoder_gone() -> io::Error {
+    io::Error::other("the GIF encoding thread stopped")
 }
 
 fn gif_error(e: gif::EncodingError) -> io::Error {
@@ -93,22 +167,32 @@ impl<W: Write> GifWriter<W> {
             .set_repeat(gif::Repeat::Infinite)
             .map_err(gif_error)?;
         let delay_cs = u16::try_from(frame_ms / 10).map_err(io::Error::other)?;
-        let queue: Vec<Queued> = (0..queue_frames(width.into(), height.into()))
-            .map(|_| Queued::default())
+        let frames = queue_frames(width.into(), height.into());
+        let batch = |coders| Batch {
+            frames: (0..frames).map(|_| Queued::default()).collect(),
+            coders,
+            table_len: palette.colours().len().next_power_of_two().max(2),
+            ..Batch::default()
+        };
+        let coders = (0..rayon::current_num_threads().min(frames))
+            .map(|_| Coder::default())
             .collect();
-        let coders = (0..rayon::current_num_threads().min(queue.len()))
-            .map(|_| Lzw::new())
-            .collect();
+        let (to_encoder, batches) = sync_channel(1);
+        let (done, from_encoder) = sync_channel(1);
+        thread::Builder::new()
+            .name("gif encoder".into())
+            .spawn(move || encode_batches(batches, done))?;
         Ok(GifWriter {
             encoder,
             width: width.into(),
             height: height.into(),
             delay_cs,
-            code_size: min_code_size(palette.colours().len()),
-            coders,
             shown: None,
-            queue,
-            queued: 0,
+            filling: batch(coders),
+            spare: Some(batch(Vec::new())),
+            in_flight: false,
+            to_encoder,
+            from_encoder,
             timings: EncodeTimings::default(),
         })
     }
@@ -128,47 +212,57 @@ impl<W: Write> GifWriter<W> {
             ));
         }
         let started = Instant::now();
-        let slot = &mut self.queue[self.queued];
+        let slot = &mut self.filling.frames[self.filling.queued];
         match &mut self.shown {
             None => {
                 slot.rect = Rect::whole(frame);
+                slot.beneath.clear();
                 self.shown = Some(frame.clone());
             }
             Some(shown) => {
                 let changed = changed_rect(shown, frame);
                 // An unchanged frame is still written, as one pixel, so it keeps its time.
                 slot.rect = changed.unwrap_or(Rect::corner());
+                crop(shown, slot.rect, &mut slot.beneath);
                 if let Some(changed) = changed {
                     paste(frame, changed, shown);
                 }
             }
         }
         crop(frame, slot.rect, &mut slot.pixels);
-        self.queued += 1;
+        self.filling.queued += 1;
         self.timings.changes += started.elapsed();
-        if self.queued == self.queue.len() {
-            self.flush()?;
+        if self.filling.queued == self.filling.frames.len() {
+            self.hand_over()?;
         }
         Ok(())
     }
 
-    /// Compresses every queued frame, all cores at once, and writes them in order.
-    pub fn flush(&mut self) -> io::Result<()> {
-        let queue = &mut self.queue[..self.queued];
+    /// Sends the full batch to the encoding thread and goes on with the other one (after
+    /// writing it, if it was out being encoded).
+    fn hand_over(&mut self) -> io::Result<()> {
+        self.collect()?;
+        // The coders go with the full batch, and come back with it.
+        let next = self
+            .spare
+            .take()
+            .expect("the spare batch is back after collect");
+        let full = std::mem::replace(&mut self.filling, next);
+        self.to_encoder.send(full).map_err(|_| encoder_gone())?;
+        self.in_flight = true;
+        Ok(())
+    }
+
+    /// Waits for the batch being encoded, if any, writes its frames in order, and keeps its
+    /// frames as the spare batch and its coders for the next.
+    fn collect(&mut self) -> io::Result<()> {
+        if !self.in_flight {
+            return Ok(());
+        }
+        let mut batch = self.from_encoder.recv().map_err(|_| encoder_gone())?;
+        self.in_flight = false;
         let started = Instant::now();
-        let code_size = self.code_size;
-        // Each coder takes an equal run of the queue, so each keeps its table hot.
-        let per_coder = queue.len().div_ceil(self.coders.len()).max(1);
-        queue
-            .par_chunks_mut(per_coder)
-            .zip(self.coders.par_iter_mut())
-            .for_each(|(frames, lzw)| {
-                for frame in frames {
-                    lzw.compress(code_size, &frame.pixels, &mut frame.lzw);
-                }
-            });
-        let compressed = Instant::now();
-        for queued in queue.iter() {
+        for queued in &batch.frames[..batch.queued] {
             let rect = queued.rect;
             let frame = gif::Frame {
                 left: rect.left as u16,
@@ -177,6 +271,8 @@ impl<W: Write> GifWriter<W> {
                 height: rect.height as u16,
                 delay: self.delay_cs,
                 dispose: gif::DisposalMethod::Keep,
+                transparent: queued.encoding.transparent,
+                interlaced: queued.encoding.interlaced,
                 buffer: Cow::Borrowed(&queued.lzw),
                 ..gif::Frame::default()
             };
@@ -184,10 +280,20 @@ impl<W: Write> GifWriter<W> {
                 .write_lzw_pre_encoded_frame(&frame)
                 .map_err(gif_error)?;
         }
-        self.queued = 0;
-        self.timings.lzw += compressed - started;
-        self.timings.write += compressed.elapsed();
+        self.timings.lzw += batch.took;
+        self.timings.write += started.elapsed();
+        self.filling.coders = take(&mut batch.coders);
+        batch.queued = 0;
+        self.spare = Some(batch);
         Ok(())
+    }
+
+    /// Encodes every frame queued so far and writes them in order.
+    pub fn flush(&mut self) -> io::Result<()> {
+        if self.filling.queued > 0 {
+            self.hand_over()?;
+        }
+        self.collect()
     }
 
     /// Where the time went so far.

@@ -7,13 +7,31 @@
 //! LZW reads bytes while the string read so far is in its dictionary; at the first byte
 //! that makes an unknown string it writes the known string's code, adds the new string as
 //! the next code, and starts again from that byte. Codes grow from `min_code_size + 1` bits
-//! to 12 as the dictionary fills; when all 4096 codes are taken it writes a clear code and
-//! starts a fresh dictionary. Every decoder rebuilds the same dictionary from the codes.
+//! to 12 as the dictionary fills; once it is full ([`Choices::max_codes`], at most 4096) it
+//! writes a clear code and starts afresh. Every decoder rebuilds the same dictionary from
+//! the codes.
+//!
+//! Clearing the dictionary earlier than GIF requires keeps the output valid and can make it
+//! smaller: a small dictionary has short codes ([`Choices::max_codes`]).
 
 /// GIF codes are at most 12 bits wide.
 const MAX_CODE_BITS: u8 = 12;
 /// So a dictionary holds at most this many codes.
 const MAX_CODES: u16 = 1 << MAX_CODE_BITS;
+
+/// How the coder chooses, where each choice keeps the output a valid GIF.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Choices {
+    /// The dictionary is cleared once it holds this many codes (at most 4096).
+    pub max_codes: u16,
+}
+
+impl Choices {
+    /// The plain coder every GIF writer uses: clearing only a full 4096-code dictionary.
+    pub const GREEDY: Choices = Choices {
+        max_codes: MAX_CODES,
+    };
+}
 
 /// An LZW coder. Its dictionary table is big (2 MB) and built once, then reused for every
 /// image it compresses: only the entries an image set are cleared afterwards.
@@ -43,54 +61,84 @@ impl Lzw {
 
     /// Compresses `pixels` (each below `2^min_code_size`) into `out`, cleared first, as a GIF
     /// image's data: the `min_code_size` byte, then the codes packed least significant bit
-    /// first (sub-block framing is left to the writer).
-    pub fn compress(&mut self, min_code_size: u8, pixels: &[u8], out: &mut Vec<u8>) {
+    /// first (sub-block framing is left to the writer). Returns the most codes the dictionary
+    /// held at once, or gives up, returning `None`, as soon as `out` reaches `budget` bytes: a
+    /// candidate that cannot win need not be finished.
+    pub fn compress(
+        &mut self,
+        min_code_size: u8,
+        pixels: &[u8],
+        choices: Choices,
+        budget: usize,
+        out: &mut Vec<u8>,
+    ) -> Option<u16> {
         out.clear();
         out.push(min_code_size);
         let clear = 1u16 << min_code_size;
         let end = clear + 1;
+        let max_codes = choices.max_codes.min(MAX_CODES);
         let mut bits = BitPacker::new(out);
         let mut width = min_code_size + 1;
         let mut free = end + 1;
+        let mut most = free;
         bits.put(clear, width);
-        let mut bytes = pixels.iter().map(|&b| u16::from(b));
-        if let Some(first) = bytes.next() {
-            let mut string = first;
-            for byte in bytes {
-                let slot = usize::from(byte) * usize::from(MAX_CODES) + usize::from(string);
-                let longer = self.next[slot];
-                if longer != 0 {
-                    string = longer;
-                    continue;
-                }
-                bits.put(string, width);
-                if free < MAX_CODES {
-                    self.next[slot] = free;
-                    self.set.push(slot);
-                    free += 1;
-                    // The decoder adds each code one code after we do, and widens once its
-                    // next free code no longer fits: so we widen once ours is one past that.
-                    if free > 1 << width {
-                        width += 1;
-                    }
-                } else {
-                    bits.put(clear, width);
-                    self.forget();
-                    width = min_code_size + 1;
-                    free = end + 1;
-                }
-                string = byte;
+        let mut at = 0;
+        while at < pixels.len() {
+            let (code, len) = self.longest_match(&pixels[at..]);
+            bits.put(code, width);
+            if bits.out.len() >= budget {
+                self.forget();
+                return None;
             }
-            bits.put(string, width);
-            // On reading `string` the decoder catches up with us, so the end code is read
-            // at the width our own next free code needs.
-            if free == 1 << width && width < MAX_CODE_BITS {
-                width += 1;
+            at += len;
+            let Some(&byte) = pixels.get(at) else {
+                break;
+            };
+            if free < max_codes {
+                let slot = slot(code, byte);
+                self.next[slot] = free;
+                self.set.push(slot);
+                free += 1;
+                // The decoder adds each code one code after we do, and widens once its
+                // next free code no longer fits: so we widen once ours is one past that.
+                if free > 1 << width {
+                    width += 1;
+                }
+            } else {
+                // The decoder has caught up when it reads the clear code, so it reads it at
+                // the width its own next free code needs.
+                if free == 1 << width && width < MAX_CODE_BITS {
+                    width += 1;
+                }
+                bits.put(clear, width);
+                self.forget();
+                most = most.max(free);
+                width = min_code_size + 1;
+                free = end + 1;
             }
+        }
+        // Likewise for the end code, read once the decoder has caught up.
+        if !pixels.is_empty() && free == 1 << width && width < MAX_CODE_BITS {
+            width += 1;
         }
         bits.put(end, width);
         bits.finish();
         self.forget();
+        (out.len() < budget).then_some(most.max(free))
+    }
+
+    /// The code of the longest string in the dictionary that `pixels` starts with, and its
+    /// length (at least 1: every single index is a string). `pixels` must not be empty.
+    fn longest_match(&self, pixels: &[u8]) -> (u16, usize) {
+        let mut code = u16::from(pixels[0]);
+        for (len, &byte) in pixels.iter().enumerate().skip(1) {
+            let longer = self.next[slot(code, byte)];
+            if longer == 0 {
+                return (code, len);
+            }
+            code = longer;
+        }
+        (code, pixels.len())
     }
 
     /// Empties the dictionary by undoing only the entries that were set.
@@ -99,6 +147,11 @@ impl Lzw {
             self.next[slot] = 0;
         }
     }
+}
+
+/// Where `Lzw::next` keeps the code of string `code` followed by `byte`.
+fn slot(code: u16, byte: u8) -> usize {
+    usize::from(byte) * usize::from(MAX_CODES) + usize::from(code)
 }
 
 /// Packs codes of any width into bytes, least significant bit first, as GIF wants.

@@ -5,9 +5,15 @@
 //! a trail can fade through normally fit. When they do not (long trails, many trail
 //! colours), the rule is: every trail fades through the same number of evenly spaced
 //! shades, as many as fit, the faintest never black (`fade_levels`).
+//!
+//! Only colours that can be seen enter the table: a trail's newest dot lies exactly under its
+//! ball and is never drawn (`drawn_dots`). A smaller table lets the GIF use shorter codes.
+//! And the colours drawn together get neighbouring low indices (`Palette::reorder`): a GIF
+//! frame whose indices all lie below 2^k is coded with k-bit indices.
 
 use std::collections::HashMap;
 use std::fmt;
+use std::ops::Range;
 
 use crate::scene::spec::Rgb;
 
@@ -73,6 +79,88 @@ impl Palette {
     }
 }
 
+impl Palette {
+    /// Reorders the table so that each stage's colours take indices as low as they can, and
+    /// returns the new index of each old one. A stage is the set of colours some frames draw.
+    /// `stages[0]` is placed first (it should be the one most frames show); then, again and
+    /// again, the stage that needs the fewest colours not yet placed (the first of equals).
+    /// Colours of no stage go last. The greedy choice is gifsicle's idea, done per stage.
+    pub fn reorder(&mut self, stages: &[Colours]) -> Vec<u8> {
+        // The old indices in their new order, and the set of them.
+        let mut order = Vec::with_capacity(self.colours.len());
+        let mut placed = Colours::default();
+        let mut place = |stage: &Colours, placed: &mut Colours| {
+            for index in stage.indices() {
+                if !placed.contains(index) {
+                    placed.insert(index);
+                    order.push(index);
+                }
+            }
+        };
+        let mut waiting: Vec<&Colours> = stages.iter().collect();
+        let mut next = 0;
+        while !waiting.is_empty() {
+            place(waiting.remove(next), &mut placed);
+            next = (0..waiting.len())
+                .min_by_key(|&w| waiting[w].count_outside(&placed))
+                .unwrap_or(0);
+        }
+        place(&Colours::below(self.colours.len()), &mut placed);
+
+        let mut new_index = vec![0; self.colours.len()];
+        for (new, &old) in order.iter().enumerate() {
+            new_index[usize::from(old)] = new as u8;
+        }
+        self.colours = order.iter().map(|&old| self.rgb(old)).collect();
+        for index in self.index.values_mut() {
+            *index = new_index[usize::from(*index)];
+        }
+        new_index
+    }
+}
+
+/// A set of palette indices, such as the colours some frames draw.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Colours([u64; 4]);
+
+impl Colours {
+    /// Indices `0..len`.
+    fn below(len: usize) -> Colours {
+        let mut all = Colours::default();
+        for index in 0..len.min(MAX_COLOURS) {
+            all.insert(index as u8);
+        }
+        all
+    }
+
+    pub fn insert(&mut self, index: u8) {
+        self.0[usize::from(index / 64)] |= 1 << (index % 64);
+    }
+
+    pub fn contains(&self, index: u8) -> bool {
+        self.0[usize::from(index / 64)] & (1 << (index % 64)) != 0
+    }
+
+    /// Every index in both sets.
+    pub fn union(&self, other: &Colours) -> Colours {
+        Colours(std::array::from_fn(|w| self.0[w] | other.0[w]))
+    }
+
+    /// How many of these indices are not in `other`.
+    pub fn count_outside(&self, other: &Colours) -> u32 {
+        self.0
+            .iter()
+            .zip(&other.0)
+            .map(|(a, b)| (a & !b).count_ones())
+            .sum()
+    }
+
+    /// The indices, lowest first.
+    pub fn indices(&self) -> impl Iterator<Item = u8> + '_ {
+        (0..=u8::MAX).filter(|&i| self.contains(i))
+    }
+}
+
 impl Default for Palette {
     fn default() -> Self {
         Palette::new()
@@ -82,6 +170,12 @@ impl Default for Palette {
 /// The lesson's fade: dot `i` (0 = oldest) of a trail of `n` shines at `(i + 1) / n`.
 pub fn fade(i: usize, n: usize) -> f64 {
     (i + 1) as f64 / n as f64
+}
+
+/// The dots drawn of a trail of `n`: all but the newest. The newest is where the ball is now,
+/// at fade 1, so the same circle as the ball, which is drawn over it: its shade is never seen.
+pub fn drawn_dots(n: usize) -> Range<usize> {
+    0..n.saturating_sub(1)
 }
 
 /// A trail colour dimmed by `fade`, each channel truncated as the lesson's `int(c * fade)`.
@@ -105,7 +199,7 @@ pub fn fade_levels(
     let mut fits = solid.iter().all(|&c| exact.insert(c).is_some());
     for &(colour, len) in trails {
         for n in 1..=len {
-            for i in 0..n {
+            for i in drawn_dots(n) {
                 fits = fits && exact.insert(shade(colour, fade(i, n))).is_some();
             }
         }
@@ -116,7 +210,7 @@ pub fn fade_levels(
     let mut distinct_solid = solid.to_vec();
     distinct_solid.sort_unstable();
     distinct_solid.dedup();
-    let mut trail_colours: Vec<Rgb> = trails.iter().filter(|t| t.1 > 0).map(|t| t.0).collect();
+    let mut trail_colours: Vec<Rgb> = trails.iter().filter(|t| t.1 > 1).map(|t| t.0).collect();
     trail_colours.sort_unstable();
     trail_colours.dedup();
     let spare = MAX_COLOURS.saturating_sub(distinct_solid.len());

@@ -12,7 +12,8 @@ use imageproc::drawing::draw_line_segment_mut;
 
 use super::ellipse::fill_circle;
 use super::palette::{
-    fade, fade_levels, quantised_fade, shade, IndexedFrame, Palette, TooManyColours,
+    drawn_dots, fade, fade_levels, quantised_fade, shade, Colours, IndexedFrame, Palette,
+    TooManyColours,
 };
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
@@ -34,45 +35,31 @@ pub struct Renderer {
 #[derive(Clone, Debug)]
 struct BallStyle {
     ball: u8,
-    /// Index of dot `i` of a trail of `n` at `n * (n - 1) / 2 + i`. A shade depends only on
-    /// the trail colour, so balls of one trail colour share one table, as long as their
-    /// longest trail needs: memory follows the trail colours, not the number of balls.
+    /// Its trail colour's shades, laid out as [`ShadeTable::shades`].
     trail_shades: Arc<[u8]>,
 }
 
 impl BallStyle {
     fn trail_shade(&self, i: usize, n: usize) -> u8 {
-        self.trail_shades[n * (n - 1) / 2 + i]
+        self.trail_shades[slot(i, n)]
     }
 }
 
-/// One trail colour's shades, for every trail up to `longest` points, laid out as
-/// [`BallStyle::trail_shades`].
-#[derive(Default)]
+/// Where dot `i` of a trail of `n` points sits in a shade table: a trail of `n` draws `n - 1`
+/// dots (`drawn_dots`; the newest lies under the ball), so the trails of 1 to `n - 1` points
+/// take the first `(n - 1)(n - 2)/2` places.
+fn slot(i: usize, n: usize) -> usize {
+    (n - 1) * n.saturating_sub(2) / 2 + i
+}
+
+/// One trail colour's shades, for every trail length up to the longest trail in that
+/// colour. A shade depends only on the colour, so balls of one trail colour share one table:
+/// memory follows the trail colours, not the number of balls.
 struct ShadeTable {
+    colour: Rgb,
     longest: usize,
+    /// Palette index of dot `i` of a trail of `n` at [`slot`]`(i, n)`.
     shades: Vec<u8>,
-}
-
-impl ShadeTable {
-    /// Adds the shades of trails up to `trail` points in `colour` to the table and the
-    /// palette (faded to `levels` steps when given). `None` once the palette is full.
-    fn extend_to(
-        &mut self,
-        trail: usize,
-        colour: Rgb,
-        levels: Option<usize>,
-        palette: &mut Palette,
-    ) -> Option<()> {
-        for n in self.longest + 1..=trail {
-            for i in 0..n {
-                let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
-                self.shades.push(palette.insert(shade(colour, f))?);
-            }
-        }
-        self.longest = self.longest.max(trail);
-        Some(())
-    }
 }
 
 impl Renderer {
@@ -99,27 +86,62 @@ impl Renderer {
             Some(colour) => palette.insert(colour).ok_or_else(too_many)?,
             None => background,
         };
-        // Ball by ball as before, so the palette's order (and the GIF's bytes) stay the
-        // same: a trail longer than its colour's table so far extends that table.
         let mut tables: Vec<ShadeTable> = Vec::new();
         let mut table_of: HashMap<Rgb, usize> = HashMap::new();
         let mut uses = Vec::with_capacity(scene.balls.len());
         for spec in &scene.balls {
             let ball = palette.insert(spec.colour).ok_or_else(too_many)?;
             let table = *table_of.entry(spec.trail_colour).or_insert_with(|| {
-                tables.push(ShadeTable::default());
+                tables.push(ShadeTable {
+                    colour: spec.trail_colour,
+                    longest: 0,
+                    shades: Vec::new(),
+                });
                 tables.len() - 1
             });
-            tables[table]
-                .extend_to(spec.trail, spec.trail_colour, levels, &mut palette)
-                .ok_or_else(too_many)?;
+            tables[table].longest = tables[table].longest.max(spec.trail);
             uses.push((ball, table));
+        }
+        // Shades of full-length trails first, brightest (newest, biggest dot) first:
+        // `reorder` keeps this order within each stage, and a frame where dots overlap shows
+        // mostly the newest ones.
+        let longest = tables.iter().map(|t| t.longest).max().unwrap_or(0);
+        for table in &mut tables {
+            table.shades = vec![0; slot(0, table.longest + 1)];
+        }
+        for n in (1..=longest).rev() {
+            for table in tables.iter_mut().filter(|t| n <= t.longest) {
+                for i in drawn_dots(n).rev() {
+                    let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
+                    table.shades[slot(i, n)] = palette
+                        .insert(shade(table.colour, f))
+                        .ok_or_else(too_many)?;
+                }
+            }
+        }
+        // Balls alike in trail colour and length draw alike: each kind is one stage entry.
+        let mut kinds: Vec<(usize, usize)> = scene
+            .balls
+            .iter()
+            .map(|spec| (table_of[&spec.trail_colour], spec.trail))
+            .collect();
+        kinds.sort_unstable();
+        kinds.dedup();
+        let mut always: Vec<u8> = vec![background, floor];
+        always.extend(uses.iter().map(|&(ball, _)| ball));
+        let new_index = palette.reorder(&stages(&always, &tables, &kinds));
+        let renumber = |index: &mut u8| *index = new_index[usize::from(*index)];
+        let [mut background, mut floor] = [background, floor];
+        renumber(&mut background);
+        renumber(&mut floor);
+        for table in &mut tables {
+            table.shades.iter_mut().for_each(renumber);
         }
         let tables: Vec<Arc<[u8]>> = tables.into_iter().map(|t| t.shades.into()).collect();
         let styles = uses
             .into_iter()
             .map(|(ball, table)| BallStyle {
-                ball,
+                ball: new_index[usize::from(ball)],
                 trail_shades: Arc::clone(&tables[table]),
             })
             .collect();
@@ -145,7 +167,8 @@ impl Renderer {
     }
 
     /// Draws `balls` into `frame`: background and floors, then every trail (oldest dot first, fading
-    /// and shrinking into the past), then every ball on top, so no trail hides a ball.
+    /// and shrinking into the past; the newest lies under the ball), then every ball on top,
+    /// so no trail hides a ball.
     pub fn draw(&self, balls: &[Ball], frame: &mut IndexedFrame) {
         frame.fill(self.background);
         let canvas = [f64::from(self.width), f64::from(self.height)];
@@ -157,7 +180,7 @@ impl Renderer {
         }
         for (ball, style) in balls.iter().zip(&self.styles) {
             let n = ball.trail.len();
-            for (i, &(x, y)) in ball.trail.iter().enumerate() {
+            for (i, &(x, y)) in ball.trail.iter().enumerate().take(drawn_dots(n).end) {
                 let radius = ball.radius * fade(i, n);
                 fill_circle(frame, x, y, radius, style.trail_shade(i, n));
             }
@@ -201,6 +224,38 @@ fn clip_segment(from: [f64; 2], to: [f64; 2], canvas: [f64; 2]) -> Option<([f64;
     Some((cut(from), cut(to)))
 }
 
+/// The colours drawn together, stage by stage: first the stage most frames show, with every
+/// trail grown to full length, then each frame while trails grow (at frame `t`, a trail of
+/// up to `L` points holds `min(t + 1, L)`). Every stage holds the `always` colours (background,
+/// floor, balls). `kinds` are the distinct (shade table, trail length) pairs of the balls.
+fn stages(always: &[u8], tables: &[ShadeTable], kinds: &[(usize, usize)]) -> Vec<Colours> {
+    let mut solid = Colours::default();
+    for &index in always {
+        solid.insert(index);
+    }
+    let longest = kinds.iter().map(|&(_, trail)| trail).max().unwrap_or(0);
+    // growing[t]: what frame t draws while some trail still grows; grown: every frame after.
+    let mut growing = vec![solid; longest];
+    let mut grown = solid;
+    for &(table, trail) in kinds {
+        let table = &tables[table];
+        for n in 1..=trail {
+            let mut dots = Colours::default();
+            for i in drawn_dots(n) {
+                dots.insert(table.shades[slot(i, n)]);
+            }
+            growing[n - 1] = growing[n - 1].union(&dots);
+            if n == trail {
+                grown = grown.union(&dots);
+                for stage in &mut growing[n..] {
+                    *stage = stage.union(&dots);
+                }
+            }
+        }
+    }
+    std::iter::once(grown).chain(growing).collect()
+}
+
 /// A frame's colours: each index looked up in the palette.
 pub fn to_rgb(frame: &IndexedFrame, palette: &Palette) -> image::RgbImage {
     image::RgbImage::from_fn(frame.width(), frame.height(), |x, y| {
@@ -236,7 +291,7 @@ mod tests {
         let renderer = Renderer::new(&scene).unwrap();
         for (spec, style) in scene.balls.iter().zip(&renderer.styles) {
             for n in 1..=spec.trail {
-                for i in 0..n {
+                for i in drawn_dots(n) {
                     let got = renderer.palette.rgb(style.trail_shade(i, n));
                     let want = shade(spec.trail_colour, fade(i, n));
                     assert_eq!(got, want, "trail {} dot {i} of {n}", spec.trail);
@@ -254,8 +309,8 @@ mod tests {
         ));
         assert_eq!(
             styles[3].trail_shades.len(),
-            9 * 10 / 2,
-            "sized by the longest trail"
+            9 * 8 / 2,
+            "sized by the longest trail, 9 points: 1 + 2 + ... + 8 drawn dots"
         );
     }
 }
