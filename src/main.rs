@@ -133,6 +133,9 @@ struct Args {
     /// Also write every frame's state as CSV (frame,ball,x,y,vx,vy)
     #[arg(long)]
     trace: Option<PathBuf>,
+    /// Also draw height, speed and energy per frame (SVG; PNG if PATH ends in .png)
+    #[arg(long, value_name = "PATH")]
+    plot: Option<PathBuf>,
     /// Print nothing on success
     #[arg(short, long)]
     quiet: bool,
@@ -241,6 +244,7 @@ fn main() -> ExitCode {
         gif: args.gif.clone(),
         png: args.png.clone(),
         trace: args.trace.clone(),
+        plot: args.plot.clone().or_else(|| scene.plot.clone()),
         progress: !args.quiet,
     };
     match run(&scene, &outputs) {

@@ -1,5 +1,5 @@
 //! One whole run: simulate a scene, draw every frame, stream it into the GIF, keep the last
-//! frame as the PNG, and optionally trace every state as CSV.
+//! frame as the PNG, and optionally trace every state as CSV and plot it.
 
 use std::io::{BufWriter, Write};
 use std::path::PathBuf;
@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 
 use crate::gif::GifWriter;
 use crate::output::{AtomicFile, OutputError};
+use crate::plot::Plot;
 use crate::progress::Progress;
 use crate::render::palette::TooManyColours;
 use crate::render::raster::Renderer;
@@ -21,6 +22,8 @@ pub struct Outputs {
     pub png: PathBuf,
     /// The CSV of every ball's state in every frame, when asked for.
     pub trace: Option<PathBuf>,
+    /// The plot of height, speed and energy per frame (SVG, or PNG for `.png`), when asked for.
+    pub plot: Option<PathBuf>,
     /// Show a progress bar on stderr if the run looks long (never when stderr is not a terminal).
     pub progress: bool,
 }
@@ -60,11 +63,21 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     let started = Instant::now();
     scene.validate()?;
     let renderer = Renderer::new(scene)?;
+    let mut plot = outputs
+        .plot
+        .as_deref()
+        .map(|path| Plot::new(scene, path))
+        .transpose()?;
     // Open every output first, so an unwritable path fails before any work is done.
     let mut gif_file = AtomicFile::create(&outputs.gif)?;
     let mut png_file = AtomicFile::create(&outputs.png)?;
     let mut trace_file = outputs
         .trace
+        .as_deref()
+        .map(AtomicFile::create)
+        .transpose()?;
+    let plot_file = outputs
+        .plot
         .as_deref()
         .map(AtomicFile::create)
         .transpose()?;
@@ -92,6 +105,9 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         if let Some(out) = trace_out.as_mut() {
             trace::write_frame(out, n, simulation.balls()).map_err(OutputError::at(trace_path))?;
         }
+        if let Some(plot) = plot.as_mut() {
+            plot.record(simulation.balls());
+        }
         renderer.draw(simulation.balls(), &mut frame);
         gif.write_frame(&frame).map_err(&gif_error)?;
         progress.frames_done(n + 1);
@@ -108,6 +124,12 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         .and_then(|()| png_out.flush())
         .map_err(OutputError::at(&outputs.png))?;
     drop(png_out);
+    if let (Some(plot), Some(mut file), Some(path)) = (plot, plot_file, outputs.plot.as_deref()) {
+        plot.write(file.file()).map_err(OutputError::at(path))?;
+        // First of the renames: a plot path that cannot be replaced (a folder) then fails
+        // before any other output is put in place.
+        file.commit()?;
+    }
 
     let gif_bytes = gif_file.commit()?;
     let png_bytes = png_file.commit()?;

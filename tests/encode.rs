@@ -22,6 +22,7 @@ fn write_gif(scene: &Scene, dir: &Path) -> std::path::PathBuf {
         gif: dir.join("scene.gif"),
         png: dir.join("scene.png"),
         trace: None,
+        plot: None,
         progress: false,
     };
     run(scene, &outputs).expect("the scene runs");

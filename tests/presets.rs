@@ -18,6 +18,7 @@ fn every_preset_gif_in_scenes_matches_a_fresh_render_byte_for_byte() {
             gif: dir.path().join(format!("{name}.gif")),
             png: dir.path().join(format!("{name}.png")),
             trace: None,
+            plot: None,
             progress: false,
         };
         run(&scene, &outputs).unwrap_or_else(|e| panic!("preset {name}: {e}"));

@@ -1,7 +1,7 @@
 //! Scene files (TOML) and the bundled presets, which are the files under `scenes/`
 //! compiled into the binary. Reading a file checks every key, type and range.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
@@ -126,6 +126,8 @@ struct SceneFile {
     #[serde(default)]
     balls: Vec<BallFile>,
     spawn: Option<Spawn>,
+    /// Where to draw the plot of the run, relative to the current folder (as `--plot` is).
+    plot: Option<PathBuf>,
 }
 
 fn default_frames() -> u32 {
@@ -254,6 +256,7 @@ impl SceneFile {
             },
             frames: self.frames,
             frame_ms: self.frame_ms,
+            plot: self.plot,
         })
     }
 }
