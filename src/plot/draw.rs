@@ -7,10 +7,12 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::record::{Panel, Recording};
+use super::record::{Panel, Recording, Series};
 
-/// The picture's width, and the height of a title line and of each panel, px.
+/// The picture's width, of the legend strip right of each panel, and the height of a title
+/// line and of each panel, px.
 const WIDTH: u32 = 960;
+const LEGEND_WIDTH: u32 = 190;
 const TITLE_LINE_HEIGHT: u32 = 24;
 const PANEL_HEIGHT: u32 = 250;
 /// The longest title line, characters (it fits the width at the title's font size).
@@ -97,15 +99,23 @@ fn tick_label(span: f64) -> impl Fn(&f64) -> String {
     move |v| format!("{v:.decimals$}")
 }
 
+/// One panel: its chart on the left, its legend in a strip on the right, so the legend never
+/// hides a line.
 fn draw_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     recording: &Recording,
     panel: Panel,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-    let in_panel = || recording.series.iter().filter(move |s| s.panel == panel);
-    let (low, high) = value_range(in_panel().flat_map(|s| &s.values));
+    let (chart_area, legend_area) = area.split_horizontally(WIDTH - LEGEND_WIDTH);
+    let in_panel: Vec<(usize, &Series)> = recording
+        .series
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.panel == panel)
+        .collect();
+    let (low, high) = value_range(in_panel.iter().flat_map(|(_, s)| &s.values));
     let last_frame = f64::from(recording.frames().saturating_sub(1).max(1));
-    let mut chart = ChartBuilder::on(area)
+    let mut chart = ChartBuilder::on(&chart_area)
         .margin(10)
         .x_label_area_size(36)
         .y_label_area_size(72)
@@ -123,43 +133,37 @@ fn draw_panel<DB: DrawingBackend>(
         .bold_line_style(RGBColor(230, 230, 230))
         .draw()?;
 
-    if !recording.bounces.is_empty() {
-        let marks = recording.bounces.iter().map(|&frame| {
-            let x = f64::from(frame);
-            PathElement::new(vec![(x, low), (x, high)], BOUNCE.stroke_width(1))
-        });
-        let marks = chart.draw_series(marks)?;
-        if panel == Panel::Height {
-            marks
-                .label("bounce (velocity turns upwards)")
-                .legend(|(x, y)| {
-                    PathElement::new(
-                        vec![(x + 10, y - 7), (x + 10, y + 7)],
-                        BOUNCE.stroke_width(1),
-                    )
-                });
-        }
-    }
-    for (i, series) in recording.series.iter().enumerate() {
-        if series.panel != panel {
-            continue;
-        }
+    // Bounce marks first, so the lines are drawn over them.
+    let marks = recording.bounces.iter().map(|&frame| {
+        let x = f64::from(frame);
+        PathElement::new(vec![(x, low), (x, high)], BOUNCE.stroke_width(1))
+    });
+    chart.draw_series(marks)?;
+    let mut legend: Vec<(&str, ShapeStyle, bool)> = Vec::new();
+    for (i, series) in in_panel {
         let style = COLOURS[i % COLOURS.len()].stroke_width(2);
         let points = series
             .values
             .iter()
             .enumerate()
             .map(|(frame, &v)| (frame as f64, v));
-        chart
-            .draw_series(LineSeries::new(points, style))?
-            .label(series.name)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        chart.draw_series(LineSeries::new(points, style))?;
+        legend.push((series.name, style, false));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 13))
-        .draw()
+    if !recording.bounces.is_empty() {
+        legend.push(("bounce (moving up again)", BOUNCE.stroke_width(1), true));
+    }
+
+    let text = ("sans-serif", 13).into_text_style(&legend_area);
+    for (row, (name, style, upright)) in legend.into_iter().enumerate() {
+        let y = 30 + 22 * row as i32;
+        let sample = if upright {
+            vec![(12, y - 8), (12, y + 8)]
+        } else {
+            vec![(0, y), (24, y)]
+        };
+        legend_area.draw(&PathElement::new(sample, style))?;
+        legend_area.draw_text(name, &text.pos(Pos::new(HPos::Left, VPos::Center)), (32, y))?;
+    }
+    Ok(())
 }
