@@ -90,11 +90,6 @@ impl Plot {
         self.recording.record(balls);
     }
 
-    /// The numbers recorded so far.
-    pub fn recording(&self) -> &Recording {
-        &self.recording
-    }
-
     /// Draws the recording and writes it to `out`.
     pub fn write(&self, mut out: impl Write) -> io::Result<()> {
         use_embedded_font()?;
@@ -154,7 +149,7 @@ pub fn write_png(
 
 /// The settings that shape the curves, for the title: how many balls, the solver
 /// (integrator, substeps, collision mode), the walls' damping and the forces.
-pub fn settings(scene: &Scene) -> Vec<String> {
+fn settings(scene: &Scene) -> Vec<String> {
     let motion = scene.motion;
     let balls = scene.balls.len();
     let mut parts = vec![
