@@ -8,6 +8,7 @@
 //! - [`scene`]: what to simulate, from the lesson's constants, a TOML file or a preset.
 //! - [`render`]: a frame drawn into palette indices; the still PNG.
 //! - [`gif`]: the animated GIF, streamed out.
+//! - [`plot`]: height, speed and energy of the run against frame, as SVG or PNG.
 //!
 //! At the top, [`run`] ties them together for the command line, [`budget`] works out before
 //! the first frame what a scene will cost, [`output`] makes files appear whole or not at all
@@ -18,6 +19,7 @@ pub mod budget;
 pub mod gif;
 pub mod output;
 pub mod physics;
+pub mod plot;
 pub mod progress;
 pub mod render;
 pub mod run;

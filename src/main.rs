@@ -136,6 +136,9 @@ struct Args {
     /// Also write every frame's state as CSV (frame,ball,x,y,vx,vy); - for standard output
     #[arg(long)]
     trace: Option<PathBuf>,
+    /// Also draw height, speed and energy per frame (SVG; PNG if PATH ends in .png)
+    #[arg(long, value_name = "PATH")]
+    plot: Option<PathBuf>,
     /// Refuse a scene predicted to need more memory than this, MB
     #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_BUDGET >> 20)]
     memory_budget: u64,
@@ -271,6 +274,7 @@ fn main() -> ExitCode {
     };
     let outputs = Outputs {
         trace: args.trace.clone(),
+        plot: args.plot.clone().or_else(|| scene.plot.clone()),
         progress: !args.quiet,
         scene_file: args.scene.clone(),
         memory_budget: args.memory_budget.saturating_mul(1 << 20),

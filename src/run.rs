@@ -1,5 +1,5 @@
 //! One whole run: simulate a scene, draw every frame, stream it into the GIF, keep the last
-//! frame as the PNG, and optionally trace every state as CSV.
+//! frame as the PNG, and optionally trace every state as CSV and plot it.
 //!
 //! Everything that can be refused is refused before the first frame: the scene's values, its
 //! colours, its memory ([`crate::budget`]) and the output paths ([`crate::output::check`]).
@@ -13,6 +13,7 @@ use crate::budget::{Estimate, OverBudget, DEFAULT_MEMORY_BUDGET};
 use crate::gif::GifWriter;
 use crate::output::{self, AtomicFile, Output, OutputError, OutputRefused, StdoutStream};
 use crate::physics::Ball;
+use crate::plot::Plot;
 use crate::progress::Progress;
 use crate::render::palette::TooManyColours;
 use crate::render::raster::Renderer;
@@ -28,6 +29,8 @@ pub struct Outputs {
     pub png: PathBuf,
     /// The CSV of every ball's state in every frame, when asked for; `-` is standard output.
     pub trace: Option<PathBuf>,
+    /// The plot of height, speed and energy per frame (SVG, or PNG for `.png`), when asked for.
+    pub plot: Option<PathBuf>,
     /// Talk on stderr while running: warnings, and a progress bar if the run looks long
     /// (never when stderr is not a terminal). False for `--quiet`.
     pub progress: bool,
@@ -46,6 +49,7 @@ impl Outputs {
             gif: gif.into(),
             png: png.into(),
             trace: None,
+            plot: None,
             progress: false,
             scene_file: None,
             memory_budget: DEFAULT_MEMORY_BUDGET,
@@ -62,6 +66,9 @@ impl Outputs {
         ];
         if let Some(path) = &self.trace {
             list.push(Output::stream("--trace", path));
+        }
+        if let Some(path) = &self.plot {
+            list.push(Output::file("--plot", path));
         }
         list
     }
@@ -169,6 +176,11 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     estimate.check(outputs.memory_budget)?;
     output::check(&outputs.list(), outputs.scene_file.as_deref())?;
     let renderer = Renderer::new(scene)?;
+    let mut plot = outputs
+        .plot
+        .as_deref()
+        .map(|path| Plot::new(scene, path))
+        .transpose()?;
     // Open every output first, so an unwritable folder fails before any work is done.
     let mut gif_file = AtomicFile::create(&outputs.gif)?;
     let mut png_file = AtomicFile::create(&outputs.png)?;
@@ -176,6 +188,11 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         Some(path) if !output::is_stdout(path) => Some(AtomicFile::create(path)?),
         _ => None,
     };
+    let mut plot_file = outputs
+        .plot
+        .as_deref()
+        .map(AtomicFile::create)
+        .transpose()?;
     // Only once nothing more can be refused, so a refusal stays a single line.
     if outputs.progress {
         for warning in estimate.warnings(scene) {
@@ -212,6 +229,9 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         if let Some(out) = trace_out.as_mut() {
             trace::write_frame(out, n, simulation.balls()).map_err(OutputError::at(trace_path))?;
         }
+        if let Some(plot) = plot.as_mut() {
+            plot.record(simulation.balls());
+        }
         renderer.draw(simulation.balls(), &mut frame);
         gif.write_frame(&frame).map_err(&gif_error)?;
         progress.frames_done(n + 1);
@@ -229,10 +249,17 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         .and_then(|()| png_out.flush())
         .map_err(OutputError::at(&outputs.png))?;
     drop(png_out);
+    if let (Some(plot), Some(file), Some(path)) = (plot, &mut plot_file, outputs.plot.as_deref()) {
+        plot.write(file.file()).map_err(OutputError::at(path))?;
+    }
 
     // The last moment a signal stops the run; from here on the files go into place.
     stop_if_asked(outputs, scene.frames, scene.frames)?;
-    let sizes = output::commit_all([gif_file, png_file].into_iter().chain(trace_file).collect())?;
+    let files = [gif_file, png_file]
+        .into_iter()
+        .chain(trace_file)
+        .chain(plot_file);
+    let sizes = output::commit_all(files.collect())?;
     Ok(Summary {
         frames: scene.frames,
         gif_bytes: sizes[0],

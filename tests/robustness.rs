@@ -121,6 +121,11 @@ fn two_outputs_naming_one_file_or_the_scene_file_are_refused() {
             &["--scene", "my.toml", "--trace", "hard-link.toml"],
             "is the scene file",
         ),
+        (
+            &["--png", "o.png", "--plot", "o.png"][..],
+            "same file as --png o.png",
+        ),
+        (&["--plot", "fifo"], "--plot fifo: is a named pipe (FIFO)"),
     ] {
         let mut list = list.to_vec();
         list.extend(["--frames", "4000000000", "-q"]);

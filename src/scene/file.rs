@@ -2,7 +2,7 @@
 //! compiled into the binary. Reading a file checks every key, type and range.
 
 use std::io::Read;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
@@ -220,6 +220,8 @@ struct SceneFile {
     #[serde(default)]
     balls: Vec<BallFile>,
     spawn: Option<Spawn>,
+    /// Where to draw the plot of the run, relative to the current folder (as `--plot` is).
+    plot: Option<PathBuf>,
 }
 
 fn default_frames() -> u32 {
@@ -348,6 +350,7 @@ impl SceneFile {
             },
             frames: self.frames,
             frame_ms: self.frame_ms,
+            plot: self.plot,
         })
     }
 }

@@ -4,6 +4,7 @@
 //! `Renderer` into pixels. Every effect is optional and runs only if the scene names it.
 
 use std::fmt;
+use std::path::PathBuf;
 
 use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
@@ -53,6 +54,8 @@ pub struct Scene {
     pub frames: u32,
     /// How long each frame shows in the GIF, ms (a multiple of 10).
     pub frame_ms: u32,
+    /// Where a scene file asks for a plot of the run (`plot = "run.svg"`); `--plot` overrides it.
+    pub plot: Option<PathBuf>,
 }
 
 /// One ball as the scene starts it.
@@ -136,6 +139,7 @@ impl Scene {
             motion: Motion::default(),
             frames: 1,
             frame_ms: 30,
+            plot: None,
         }
     }
 

@@ -1,19 +1,25 @@
 //! What accuracy costs in time: every integrator × substeps × collision mode, measured against
 //! closed-form physics (see `bouncing_ball::physics::accuracy`).
 //!
-//! `cargo run --release --example accuracy` prints the table and the fitted convergence
-//! orders, reproduces the "lost apex" finding, and writes `examples/accuracy.png` (error
-//! against time per frame) and `examples/apex.png` (apex height per bounce, clamp vs exact).
+//! `cargo run --release --example accuracy [-- FOLDER]` prints the table and the fitted
+//! convergence orders, reproduces the "lost apex" finding, and writes `accuracy.png` (error
+//! against time per frame) and `apex.png` (apex height per bounce, clamp vs exact) into
+//! FOLDER, `target/accuracy/` if none is given. `-- docs/img` refreshes the pictures the
+//! documentation shows (`docs/img/refresh.sh` does that and the rest).
+
+mod apex;
 
 use std::error::Error;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use bouncing_ball::output::OutputError;
 use bouncing_ball::physics::accuracy::{
-    apex_height, bounces, energy_drift, fitted_order, free_flight_error, Bounce, FLOOR, GRAVITY,
+    apex_height, bounces, energy_drift, fitted_order, free_flight_error, FLOOR, GRAVITY,
 };
 use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::plot::{flag_name, save_png};
 use plotters::prelude::*;
 
 const SUBSTEPS: [u32; 7] = [1, 2, 4, 8, 16, 32, 64];
@@ -82,10 +88,10 @@ fn print_table(rows: &[Row]) {
     for row in rows {
         let m = row.motion;
         println!(
-            "| {:?} | {} | {:?} | {:.2e} | {:.2e} | {:+.2e} | {:.0} |",
-            m.integrator,
+            "| {} | {} | {} | {:.2e} | {:.2e} | {:+.2e} | {:.0} |",
+            flag_name(m.integrator),
             m.substeps,
-            m.collisions,
+            flag_name(m.collisions),
             row.flight_error,
             row.apex_error,
             row.energy_drift,
@@ -105,57 +111,15 @@ fn print_orders(rows: &[Row]) {
             .map(|r| (1.0 / f64::from(r.motion.substeps), r.flight_error))
             .collect();
         println!(
-            "| {integrator:?} | {:.2} (from {} points) | {textbook} |",
+            "| {} | {:.2} (from {} points) | {textbook} |",
+            flag_name(integrator),
             fitted_order(&points),
             points.len()
         );
     }
 }
 
-/// The finding: the lesson's elastic ball, clamp vs exact, for 3000 frames.
-struct Finding {
-    label: &'static str,
-    colour: RGBColor,
-    bounces: Vec<Bounce>,
-}
-
-fn finding() -> Vec<Finding> {
-    let euler = Motion::default();
-    let verlet = Motion {
-        integrator: Integrator::VelocityVerlet,
-        collisions: CollisionMode::Exact,
-        ..Motion::default()
-    };
-    let run = |motion, vy0| {
-        let mut found = bounces(motion, 1.0, 40.0, vy0, 3_000);
-        found.pop(); // the last flight is cut off by the end of the run
-        found
-    };
-    vec![
-        Finding {
-            label: "clamp, semi-implicit Euler, vy0 0.3",
-            colour: RGBColor(220, 50, 50),
-            bounces: run(euler, 0.3),
-        },
-        Finding {
-            label: "clamp, semi-implicit Euler, from rest",
-            colour: RGBColor(230, 150, 0),
-            bounces: run(euler, 0.0),
-        },
-        Finding {
-            label: "exact, velocity Verlet, vy0 0.3 (under the green line)",
-            colour: RGBColor(40, 90, 220),
-            bounces: run(verlet, 0.3),
-        },
-        Finding {
-            label: "exact, velocity Verlet, from rest",
-            colour: RGBColor(40, 150, 60),
-            bounces: run(verlet, 0.0),
-        },
-    ]
-}
-
-fn print_finding(findings: &[Finding]) {
+fn print_finding(findings: &[apex::Finding]) {
     println!("\nThe lost apex (damping 1, apex as y, px; the release is at y 40):");
     for f in findings {
         let seen: Vec<String> = f
@@ -185,35 +149,9 @@ fn print_finding(findings: &[Finding]) {
                 .iter()
                 .map(|b| (b.flight_apex - expected).abs() / expected)
                 .fold(0.0, f64::max);
-            println!("  {integrator:?}, vy0 {vy0}: {worst:.2e}");
+            println!("  {}, vy {vy0}: {worst:.2e}", flag_name(integrator));
         }
     }
-}
-
-fn output(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("examples")
-        .join(name)
-}
-
-/// Draws into an RGB buffer with plotters and saves it with the `image` crate.
-fn save_plot(
-    name: &str,
-    size: (u32, u32),
-    draw: impl FnOnce(DrawingArea<BitMapBackend, plotters::coord::Shift>) -> Result<(), Box<dyn Error>>,
-) -> Result<PathBuf, Box<dyn Error>> {
-    let mut pixels = vec![0u8; (size.0 * size.1 * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut pixels, size).into_drawing_area();
-        root.fill(&WHITE)?;
-        draw(root.clone())?;
-        root.present()?;
-    }
-    let path = output(name);
-    image::RgbImage::from_raw(size.0, size.1, pixels)
-        .ok_or("plot buffer has the wrong size")?
-        .save(&path)?;
-    Ok(path)
 }
 
 /// One panel of `accuracy.png`: its title, the error it shows, the collision modes drawn
@@ -228,7 +166,7 @@ struct Panel {
 
 /// Error against cost, log-log: one line per integrator and mode (exact with dots), its
 /// points substeps 1 to 64 from left to right.
-fn plot_cost(rows: &[Row]) -> Result<PathBuf, Box<dyn Error>> {
+fn plot_cost(rows: &[Row], path: &Path) -> Result<(), OutputError> {
     let panels = [
         Panel {
             title: "free flight with drag: position error, px",
@@ -243,7 +181,7 @@ fn plot_cost(rows: &[Row]) -> Result<PathBuf, Box<dyn Error>> {
             legend: SeriesLabelPosition::MiddleRight,
         },
     ];
-    save_plot("accuracy.png", (1400, 600), |root| {
+    save_png(path, (1400, 600), |root| {
         for (area, panel) in root.split_evenly((1, 2)).iter().zip(panels) {
             let mut chart = ChartBuilder::on(area)
                 .caption(panel.title, ("sans-serif", 22))
@@ -271,7 +209,7 @@ fn plot_cost(rows: &[Row]) -> Result<PathBuf, Box<dyn Error>> {
                     let style = colour.stroke_width(2);
                     chart
                         .draw_series(LineSeries::new(points, style).point_size(dots))?
-                        .label(format!("{integrator:?}, {mode:?}"))
+                        .label(format!("{}, {}", flag_name(integrator), flag_name(mode)))
                         .legend(move |(x, y)| {
                             EmptyElement::at((x, y))
                                 + PathElement::new(vec![(0, 0), (20, 0)], style)
@@ -291,53 +229,12 @@ fn plot_cost(rows: &[Row]) -> Result<PathBuf, Box<dyn Error>> {
     })
 }
 
-/// Bounces shown in `apex.png`: the sinking apex reaches the floor at about 52.
-const PLOTTED_BOUNCES: usize = 60;
-
-/// Apex height above the floor per bounce (as drawn), for each run of the finding.
-fn plot_apex(findings: &[Finding]) -> Result<PathBuf, Box<dyn Error>> {
-    save_plot("apex.png", (900, 520), |root| {
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "damping 1: apex per bounce, clamp vs exact",
-                ("sans-serif", 22),
-            )
-            .margin(12)
-            .x_label_area_size(45)
-            .y_label_area_size(60)
-            .build_cartesian_2d(1..PLOTTED_BOUNCES, 0f64..200.0)?;
-        chart
-            .configure_mesh()
-            .x_desc("bounce")
-            .y_desc("apex height above the floor, px")
-            .y_label_formatter(&|v| format!("{v:.0}"))
-            .draw()?;
-        for f in findings {
-            let colour = f.colour;
-            let points = (1..PLOTTED_BOUNCES)
-                .zip(&f.bounces)
-                .map(|(k, b)| (k, b.seen_apex));
-            chart
-                .draw_series(LineSeries::new(points, colour.stroke_width(2)))?
-                .label(f.label)
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
-                });
-        }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::MiddleRight)
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 14))
-            .draw()?;
-        Ok(())
-    })
-}
-
 fn main() -> Result<(), Box<dyn Error>> {
-    plotters::style::register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular())
-        .map_err(|_| "the embedded font did not load")?;
+    let folder = match std::env::args_os().nth(1) {
+        Some(folder) => PathBuf::from(folder),
+        None => Path::new(env!("CARGO_MANIFEST_DIR")).join("target/accuracy"),
+    };
+    std::fs::create_dir_all(&folder)?;
     let started = Instant::now();
     let mut rows = Vec::new();
     for (integrator, _, _) in INTEGRATORS {
@@ -353,10 +250,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
     print_table(&rows);
     print_orders(&rows);
-    let findings = finding();
+    let findings = apex::finding();
     print_finding(&findings);
-    println!("\nwrote {}", plot_cost(&rows)?.display());
-    println!("wrote {}", plot_apex(&findings)?.display());
+    plot_cost(&rows, &folder.join("accuracy.png"))?;
+    apex::plot(&findings, &folder.join("apex.png"))?;
+    println!("\nwrote accuracy.png and apex.png in {}", folder.display());
     println!("study took {:.1} s", started.elapsed().as_secs_f64());
     Ok(())
 }
