@@ -347,6 +347,7 @@ fn main() -> Result<(), Box<dyn Error>> {
                     integrator,
                     substeps,
                     collisions,
+                    ..Motion::default()
                 }));
             }
         }

@@ -19,6 +19,10 @@ pub enum CollisionMode {
     Exact,
 }
 
+/// Velocity and position iterations of the contact solver per step, unless the scene says
+/// otherwise (`docs/contacts.md` has the measurements behind the choice).
+pub const DEFAULT_ITERATIONS: u32 = 12;
+
 /// The solver settings for one frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Motion {
@@ -26,6 +30,9 @@ pub struct Motion {
     /// Each frame is split into this many equal steps (at least 1).
     pub substeps: u32,
     pub collisions: CollisionMode,
+    /// Velocity and position iterations of the contact solver per step (at least 1); used
+    /// only by scenes with ball-ball collisions in clamp mode.
+    pub iterations: u32,
 }
 
 impl Default for Motion {
@@ -34,6 +41,7 @@ impl Default for Motion {
             integrator: Integrator::default(),
             substeps: 1,
             collisions: CollisionMode::default(),
+            iterations: DEFAULT_ITERATIONS,
         }
     }
 }
