@@ -152,6 +152,12 @@ impl Grid {
         }
     }
 
+    /// The balls' indices in cell order (row by row), as of the last `rebuild`: balls near
+    /// each other in space are mostly near each other in this order.
+    pub fn order(&self) -> impl Iterator<Item = usize> + '_ {
+        self.entries.iter().map(|entry| entry.index)
+    }
+
     /// The entries of the cells from `first` to `last` column (inclusive) of `row`.
     fn cells(&self, row: usize, first: usize, last: usize) -> Range<usize> {
         let start = row * self.columns;
