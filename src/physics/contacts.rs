@@ -11,14 +11,17 @@
 //!
 //! One step:
 //!
-//! 1. **Find contacts** where the balls are: pairs closer than a small margin (from the grid),
-//!    walls and floors within the distance the ball can travel in the step. A contact with a
-//!    gap is *speculative*: it only forbids closing by more than the gap.
-//! 2. Then `iterations` times, for a sub-step `h` of the step:
+//! 1. **Find contacts** where the balls are: pairs, walls and floors that can touch within the
+//!    step (the grid grows each ball by the distance it can travel). A contact with a gap is
+//!    *speculative*: it only forbids closing by more than the gap. The solver works on a copy
+//!    of the balls in the grid's order, and a ball that can touch nothing takes the whole step
+//!    at once, as in the lesson.
+//! 2. Then, for the others, `iterations` times, for a sub-step `h` of the step:
 //!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
-//!    - **Warm start**: each contact pushes again with its impulse of the previous sub-step
-//!      (or of the previous step's last one). A stack that stood then stands now, instead of
-//!      its weight having to travel up through it again, one ball per pass.
+//!    - **Warm start** (under gravity only): each contact pushes again with the lesser of its
+//!      last two sub-steps' impulses (the previous step's, at first). A stack that stood then
+//!      stands now, instead of its weight having to travel up through it again, one ball per
+//!      pass; an impact, a spike in one sub-step, is not pushed twice.
 //!    - **Velocity pass** (Gauss–Seidel): contact after contact, the impulse that brings its
 //!      relative normal speed to its target, added to its running total, which is never
 //!      negative (contacts push, never pull). A contact closing faster than the rest speed

@@ -19,8 +19,9 @@ pub enum CollisionMode {
     Exact,
 }
 
-/// Velocity and position iterations of the contact solver per step, unless the scene says
-/// otherwise (`docs/contacts.md` has the measurements behind the choice).
+/// Iterations of the contact solver per step unless the scene says otherwise: each is a
+/// sub-step with one velocity and one position pass (`docs/contacts.md` has the measurements
+/// behind the number).
 pub const DEFAULT_ITERATIONS: u32 = 12;
 
 /// The solver settings for one frame.
@@ -30,8 +31,8 @@ pub struct Motion {
     /// Each frame is split into this many equal steps (at least 1).
     pub substeps: u32,
     pub collisions: CollisionMode,
-    /// Velocity and position iterations of the contact solver per step (at least 1); used
-    /// only by scenes with ball-ball collisions in clamp mode.
+    /// Iterations (sub-steps) of the contact solver per step, at least 1; used only by scenes
+    /// with ball-ball collisions in clamp mode.
     pub iterations: u32,
 }
 
