@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
+use bouncing_ball::physics::motion::DEFAULT_ITERATIONS;
 use bouncing_ball::physics::{CollisionMode, Integrator};
 use bouncing_ball::scene::{self, preset_names, Overrides, SceneFileError};
 use bouncing_ball::stop::Stop;
@@ -118,6 +119,9 @@ struct Args {
     /// How wall and floor contacts are resolved
     #[arg(long, value_enum, default_value_t = CollisionMode::default())]
     collisions: CollisionMode,
+    /// Contact-solver iterations per step (ball-ball collisions in clamp mode)
+    #[arg(long, default_value_t = DEFAULT_ITERATIONS)]
+    iterations: u32,
     /// Trail length, points (0: no trail)
     #[arg(long, default_value_t = TRAIL_LEN)]
     trail: usize,
@@ -203,6 +207,7 @@ impl Args {
             integrator: typed("integrator").then_some(self.integrator),
             substeps: typed("substeps").then_some(self.substeps),
             collisions: typed("collisions").then_some(self.collisions),
+            iterations: typed("iterations").then_some(self.iterations),
         }
     }
 

@@ -21,6 +21,7 @@ fn motion(integrator: Integrator, substeps: u32, collisions: CollisionMode) -> M
         integrator,
         substeps,
         collisions,
+        ..Motion::default()
     }
 }
 

@@ -214,6 +214,7 @@ fn bad_input_gets_one_line_naming_the_flag_exit_2_and_no_file() {
         (&["--height", "0"], "--height 0"),
         (&["--frame-ms", "33"], "--frame-ms 33"),
         (&["--trail", "5000"], "--trail 5000"),
+        (&["--iterations", "0"], "--iterations 0"),
         (&["--frames", "ten"], "--frames"),
     ] {
         let dir = temp_dir();

@@ -1,5 +1,5 @@
 //! Property tests over random scenes within the allowed ranges: whatever the balls, forces,
-//! floors, integrator, substeps and collision mode, the state stays finite, every ball stays
+//! floors, ball-ball collisions, integrator, substeps, iterations and collision mode, the state stays finite, every ball stays
 //! in its box, energy obeys its bound, and two runs give the same bits.
 
 use bouncing_ball::physics::floor::Floor;
@@ -54,11 +54,13 @@ fn motion() -> impl Strategy<Value = Motion> {
         proptest::sample::select(Integrator::value_variants()),
         1..=4u32,
         proptest::sample::select(CollisionMode::value_variants()),
+        1..=12u32,
     )
-        .prop_map(|(integrator, substeps, collisions)| Motion {
+        .prop_map(|(integrator, substeps, collisions, iterations)| Motion {
             integrator,
             substeps,
             collisions,
+            iterations,
         })
 }
 
@@ -74,14 +76,16 @@ fn scene(with_floors: bool) -> impl Strategy<Value = Scene> {
             0.0..=1.0f64,
             proptest::collection::vec(floor_in(width, height), 0..if with_floors { 4 } else { 1 }),
             motion(),
+            proptest::option::of(0.0..=1.0f64),
         )
             .prop_map(
-                move |(balls, gravity, drag, damping, floors, motion)| Scene {
+                move |(balls, gravity, drag, damping, floors, motion, restitution)| Scene {
                     balls,
                     gravity: gravity.map(|(gx, gy)| [gx, gy]),
                     drag,
                     walls: Some(damping),
                     floors,
+                    ball_collisions: restitution,
                     motion,
                     frames: 150,
                     ..Scene::empty(w, h)

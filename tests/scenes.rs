@@ -3,6 +3,7 @@
 
 mod common;
 
+use bouncing_ball::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
 use bouncing_ball::physics::work::{self, Work};
 use bouncing_ball::render::palette::{shade, MAX_COLOURS};
 use bouncing_ball::render::Renderer;
@@ -67,10 +68,15 @@ fn overrides_replace_only_the_values_given() {
     Overrides {
         damping: Some(1.0),
         vx: Some(-1.5),
+        iterations: Some(3),
         ..Overrides::default()
     }
     .apply(&mut scene);
     assert_eq!(scene.walls, Some(1.0), "--damping sets the walls' damping");
+    assert_eq!(
+        scene.motion.iterations, 3,
+        "--iterations sets the iterations"
+    );
     assert_eq!(scene.balls[0].vx, -1.5, "--vx sets every ball's vx");
     assert_eq!(
         scene.gravity, moon.gravity,
@@ -95,7 +101,7 @@ fn a_zero_gravity_or_drag_override_removes_the_effect() {
 }
 
 /// Steps `scene` for `frames` and returns the counted work.
-fn work_done(scene: &Scene, frames: u32) -> [u64; 5] {
+fn work_done(scene: &Scene, frames: u32) -> [u64; 6] {
     let mut simulation = scene.simulation();
     work::reset();
     for _ in 0..frames {
@@ -107,34 +113,61 @@ fn work_done(scene: &Scene, frames: u32) -> [u64; 5] {
         Work::Walls,
         Work::Floor,
         Work::BallCollisions,
+        Work::Contacts,
     ]
     .map(work::count)
 }
 
 #[test]
 fn an_effect_the_scene_does_not_call_for_never_runs() {
-    // [gravity, drag, walls, floor checks, ball-ball passes] over 100 frames.
+    // [gravity, drag, walls, floor checks, one-pass ball-ball passes, contact-solver steps]
+    // over 100 frames.
     let cases = [
-        ("lesson", [100, 0, 100, 0, 0]),
-        ("no-gravity", [0, 0, 100, 0, 0]),
-        ("drag", [100, 100, 100, 0, 0]),
-        ("slope", [100, 0, 200, 100, 0]), // the box is checked before and after the floor
-        ("many", [5000, 0, 5000, 0, 0]),
-        ("billiards", [0, 0, 5000, 0, 100]),
+        ("lesson", [100, 0, 100, 0, 0, 0]),
+        ("no-gravity", [0, 0, 100, 0, 0, 0]),
+        ("drag", [100, 100, 100, 0, 0, 0]),
+        ("slope", [100, 0, 200, 100, 0, 0]), // the box is checked before and after the floor
+        ("many", [5000, 0, 5000, 0, 0, 0]),
+        ("billiards", [0, 0, 5000, 0, 0, 100]),
     ];
     for (name, expected) in cases {
         let scene = scene_file::preset(name, 1).unwrap();
         let done = work_done(&scene, 100);
         assert_eq!(
             done, expected,
-            "preset {name}: work done [gravity, drag, walls, floor, ball-ball]"
+            "preset {name}: work done [gravity, drag, walls, floor, one-pass ball-ball, contact solver]"
         );
     }
+    // The contact solver checks each ball's walls once per step; a ball that can touch
+    // nothing takes the step in one go (gravity once), one that can, one sub-step per
+    // iteration (gravity each time).
+    let pile = work_done(&scene_file::preset("pile", 1).unwrap(), 100);
+    assert_eq!(pile[1..], [0, 15000, 0, 0, 100], "preset pile: work done");
+    let most = 15000 * u64::from(DEFAULT_ITERATIONS);
+    assert!(
+        (15000..=most).contains(&pile[0]),
+        "preset pile: gravity expected 15000 to {most} times, got {}",
+        pile[0]
+    );
+    // In exact mode ball-ball collisions keep their one pass per step and no contact solver.
+    let exact = Scene {
+        motion: Motion {
+            collisions: CollisionMode::Exact,
+            ..Motion::default()
+        },
+        ..scene_file::preset("billiards", 1).unwrap()
+    };
+    assert_eq!(
+        work_done(&exact, 100)[4..],
+        [100, 0],
+        "billiards in exact mode"
+    );
 }
 
 #[test]
-fn a_scene_without_ball_collisions_never_builds_the_grid() {
-    // The grid lives inside `Collisions`, which exists only when the scene asks for it.
+fn a_scene_without_ball_collisions_never_builds_the_grid_or_the_contact_solver() {
+    // The grid lives inside `Collisions` or the contact solver, which exist only when the
+    // scene asks for ball-ball collisions.
     for (name, _) in PRESETS {
         let scene = scene_file::preset(name, 1).unwrap();
         let simulation = scene.simulation();
@@ -142,6 +175,11 @@ fn a_scene_without_ball_collisions_never_builds_the_grid() {
             simulation.has_ball_collisions(),
             scene.ball_collisions.is_some(),
             "preset {name}"
+        );
+        assert_eq!(
+            simulation.has_contact_solver(),
+            scene.ball_collisions.is_some(),
+            "preset {name}: clamp mode, so ball-ball collisions mean the contact solver"
         );
     }
 }
@@ -216,6 +254,7 @@ fn an_out_of_range_number_is_named_with_its_allowed_range() {
         ("drag = -0.1\n", "drag = -0.1", "from 0 to 1"),
         ("ball_collisions = { restitution = 2.0 }\n", "ball_collisions.restitution = 2", "from 0 to 1"),
         ("substeps = 0\n", "substeps = 0", "1 to 10000"),
+        ("iterations = 0\n", "iterations = 0", "1 to 1000"),
         ("[[floors]]\nfrom = [0.0, 1.0]\nto = [0.0, 1.0]\ndamping = 1.0\n", "floors[0].to", "must differ"),
         ("[[balls]]\nx = 40.0\ny = 40.0\nradius = 200.0\n", "balls[0].radius = 200", "2·radius < width"),
         ("[spawn]\ncount = 5000000\nradius = 1.0\nmax_speed = 1.0\ncolours = []\ntrail_colours = []\n", "spawn.count", "at most"),
@@ -350,4 +389,15 @@ fn once_the_lesson_trail_has_grown_every_frame_uses_only_indices_below_32() {
             assert!(largest < 32, "frame {n} uses index {largest}");
         }
     }
+}
+
+#[test]
+fn the_iterations_key_sets_the_contact_solver_iterations_and_defaults_to_the_constant() {
+    let given = scene_file::parse("it.toml", &format!("{GOOD_HEAD}iterations = 3\n"), 1).unwrap();
+    assert_eq!(given.motion.iterations, 3, "iterations = 3");
+    let default = scene_file::parse("it.toml", GOOD_HEAD, 1).unwrap();
+    assert_eq!(
+        default.motion.iterations, DEFAULT_ITERATIONS,
+        "no key: the default"
+    );
 }

@@ -2,6 +2,8 @@
 //! fast balls, corners, resting contact, long elastic runs, extreme magnitudes and drag.
 //! Also slopes and ball-ball contacts. (Zeno's bounces ending in rest are in `tests/accuracy.rs`.)
 
+mod common;
+
 use bouncing_ball::physics::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
@@ -27,6 +29,7 @@ fn motions(substeps: &[u32]) -> Vec<Motion> {
                     integrator,
                     substeps,
                     collisions,
+                    ..Motion::default()
                 });
             }
         }
@@ -357,21 +360,11 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
 
 mod ball_ball {
     use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
+    use bouncing_ball::physics::contacts::SLOP;
     use bouncing_ball::scene::random::Random;
-    use bouncing_ball::{BallSpec, Scene};
+    use bouncing_ball::Scene;
 
-    fn spec(x: f64, y: f64, vx: f64, vy: f64, radius: f64) -> BallSpec {
-        BallSpec {
-            x,
-            y,
-            vx,
-            vy,
-            radius,
-            colour: [255, 255, 255],
-            trail_colour: [255, 255, 255],
-            trail: 0,
-        }
-    }
+    use crate::common::white_ball as spec;
 
     /// Two balls closing at 10 diameters per frame: with 20 substeps each substep closes one
     /// diameter, less than the sum of the radii, so the overlap is seen and resolved.
@@ -425,8 +418,10 @@ mod ball_ball {
             simulation.step();
             let overlap = deepest_overlap(simulation.balls()) / 6.0;
             assert!(overlap.is_finite(), "frame {frame}: overlap must be finite");
+            // The contact solver leaves overlaps up to its slop alone.
+            let allowed = SLOP * (1.0 + 1e-9);
             if frame >= 100 {
-                assert!(overlap < 1e-6, "frame {frame}: separated by frame 100: deepest overlap bound 1e-6 r, got {overlap}");
+                assert!(overlap <= allowed, "frame {frame}: separated by frame 100: deepest overlap bound {allowed} r, got {overlap}");
             }
         }
         let energy = kinetic_energy(simulation.balls());
@@ -438,10 +433,9 @@ mod ball_ball {
 
     /// 1,000 balls covering half the box, restitution 0.9, elastic walls, no gravity.
     ///
-    /// Bound on overlap: contacts are resolved once per step (here a frame), pair by pair, so a ball pushed
-    /// out of one overlap can be pushed into another and keep that depth until the next frame.
-    /// The depth of a new overlap is at most the pair's approach in one frame, 2 × max speed
-    /// (here 2 × 1 px = 2 px = half a radius); we assert half a radius.
+    /// Bound on overlap: the contact solver finds every pair that can touch within the frame
+    /// and stops it at the touching point, so overlap comes only from what its iterations
+    /// leave unsolved; we assert 0.05 r (measured in docs/contacts.md).
     #[test]
     fn a_thousand_balls_packed_at_half_the_area_stay_finite_bounded_and_lose_energy() {
         let mut random = Random::new(7);
@@ -485,13 +479,13 @@ mod ball_ball {
                 "frame {frame}: kinetic energy rose from {energy} to {now}"
             );
             energy = now;
-            if frame % 50 == 0 {
+            if frame % 10 == 0 {
                 worst = worst.max(deepest_overlap(balls) / radius);
             }
         }
         assert!(
-            worst <= 0.5,
-            "deepest overlap bound 0.5 radius, got {worst}"
+            worst <= 0.05,
+            "deepest overlap bound 0.05 radius, got {worst}"
         );
     }
 }

@@ -1,16 +1,19 @@
 //! How the cost of a frame with ball-ball collisions grows with the number of balls.
 //!
-//! Each frame is `Simulation::step` on a scene with walls and ball-ball collisions (every
-//! ball moves, meets the walls, then the contacts are resolved), for 1,000, 10,000 and
+//! Each frame is `Simulation::step` on a scene with walls and ball-ball collisions at the
+//! default settings (the contact solver with its default iterations), for 1,000, 10,000 and
 //! 100,000 balls at packing fraction 0.3 (the balls cover 30 % of the box). Criterion
 //! reports the time per frame and, as "elements", ball-steps per second; the cost per ball
-//! should stay flat as N grows.
+//! should stay flat as N grows. A second group times a frame of the `pile` preset (150
+//! balls heaped under gravity), once it has settled.
 //!
-//! Run: `cargo bench --bench collisions` (about 20 s).
+//! Run: `RAYON_NUM_THREADS=1 cargo bench -p bouncing_ball_bench --bench collisions` (about
+//! 30 s; the physics is single-threaded either way).
 
 use std::f64::consts::PI;
 use std::time::Duration;
 
+use bouncing_ball::scene::file::preset;
 use bouncing_ball::scene::random::Random;
 use bouncing_ball::{BallSpec, Scene};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
@@ -76,12 +79,29 @@ fn collisions(c: &mut Criterion) {
     group.finish();
 }
 
+/// Frames of the pile preset run before timing: by then it has come to rest.
+const SETTLING_FRAMES: u32 = 1_000;
+
+fn pile(c: &mut Criterion) {
+    let mut group = c.benchmark_group("frame_of_settled_pile");
+    let scene = preset("pile", 1).expect("the pile preset");
+    group.throughput(Throughput::Elements(scene.balls.len() as u64));
+    group.bench_function(BenchmarkId::from_parameter(scene.balls.len()), |bencher| {
+        let mut simulation = scene.simulation();
+        for _ in 0..SETTLING_FRAMES {
+            simulation.step();
+        }
+        bencher.iter(|| simulation.step());
+    });
+    group.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default()
         .sample_size(10)
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(3));
-    targets = collisions
+    targets = collisions, pile
 }
 criterion_main!(benches);

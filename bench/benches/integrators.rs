@@ -29,6 +29,7 @@ fn bench_frames(c: &mut Criterion, group: &str, effects: &Effects, modes: &[Coll
                 integrator,
                 substeps: 1,
                 collisions,
+                ..Motion::default()
             };
             let mut ball = Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0);
             group.bench_function(format!("{integrator:?}/{collisions:?}"), |b| {

@@ -244,6 +244,7 @@ fn main() -> Result<(), Box<dyn Error>> {
                     integrator,
                     substeps,
                     collisions,
+                    ..Motion::default()
                 }));
             }
         }

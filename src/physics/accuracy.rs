@@ -138,3 +138,26 @@ pub fn fitted_order(points: &[(f64, f64)]) -> f64 {
     });
     sxy / sxx
 }
+
+/// Densest packing of equal discs (hexagonal): they cover `π/√12` of the plane.
+pub const DENSEST_PACKING: f64 = 0.9069;
+
+/// The least height a heap of `count` balls of `radius` can have on a floor `width` px wide
+/// without overlaps: their area, packed as densely as discs can be, spread over the width.
+pub fn lowest_pile(count: usize, radius: f64, width: f64) -> f64 {
+    count as f64 * std::f64::consts::PI * radius * radius / (DENSEST_PACKING * width)
+}
+
+/// How tall the heap of `balls` on a floor at `floor` (y, px) is: up to its highest ball's top.
+pub fn pile_height(balls: &[Ball], floor: f64) -> f64 {
+    balls
+        .iter()
+        .map(|b| floor - (b.y - b.radius))
+        .fold(0.0, f64::max)
+}
+
+/// Root-mean-square speed of `balls`, px/frame: how far a heap is from rest.
+pub fn rms_speed(balls: &[Ball]) -> f64 {
+    let sum: f64 = balls.iter().map(|b| b.vx * b.vx + b.vy * b.vy).sum();
+    (sum / balls.len().max(1) as f64).sqrt()
+}

@@ -100,7 +100,7 @@ fn collide(a: &mut Ball, b: &mut Ball, restitution: f64, j: usize) {
 /// no direction. Any fixed direction would separate a pair, but a heap spawned on one spot
 /// would then spread along a single line; so ball `j` leaves at `j` golden angles, which
 /// fans successive balls out evenly round the circle, and depends on nothing but `j`.
-fn coincident_normal(j: usize) -> (f64, f64) {
+pub(super) fn coincident_normal(j: usize) -> (f64, f64) {
     let angle = GOLDEN_ANGLE * j as f64;
     (angle.cos(), angle.sin())
 }

@@ -35,6 +35,24 @@ impl Floor {
         dot(sub(point, self.from), d) / dot(d, d)
     }
 
+    /// The unit normal from the segment towards `centre` and how far the centre is from the
+    /// segment (its nearest point, which may be an end). A centre on the segment gets the
+    /// face's normal. The contact solver builds its floor contacts from this.
+    pub fn nearest(&self, centre: [f64; 2]) -> ([f64; 2], f64) {
+        let t = self.along(centre).clamp(0.0, 1.0);
+        let point = [
+            self.from[0] + t * (self.to[0] - self.from[0]),
+            self.from[1] + t * (self.to[1] - self.from[1]),
+        ];
+        let offset = sub(centre, point);
+        let distance = offset[0].hypot(offset[1]);
+        if distance > 0.0 {
+            ([offset[0] / distance, offset[1] / distance], distance)
+        } else {
+            (self.normal(), 0.0)
+        }
+    }
+
     /// Resolves contact for a ball that moved from centre `from` to its current centre this step.
     ///
     /// Swept: if the ball's path crossed the segment's face (even moving many diameters per

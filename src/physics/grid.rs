@@ -48,6 +48,13 @@ impl Grid {
     /// canvas size and works for balls anywhere; positions that are not finite all land in
     /// the first cell rather than panic.
     pub fn rebuild(&mut self, balls: &[Ball]) {
+        self.rebuild_with_margins(balls, |_| 0.0);
+    }
+
+    /// Like `rebuild`, with each ball grown by `margin(ball)` px, so that
+    /// [`Grid::overlapping_pairs`] also reports pairs that are that close (the contact solver
+    /// looks at pairs that can touch within a step).
+    pub fn rebuild_with_margins(&mut self, balls: &[Ball], margin: impl Fn(&Ball) -> f64) {
         let Some(first) = balls.first() else {
             self.entries.clear();
             self.cell_start.clear();
@@ -62,7 +69,7 @@ impl Grid {
             top = top.min(ball.y);
             right = right.max(ball.x);
             bottom = bottom.max(ball.y);
-            largest_radius = largest_radius.max(ball.radius);
+            largest_radius = largest_radius.max(ball.radius + margin(ball));
         }
         let (width, height) = (right - left, bottom - top);
 
@@ -108,7 +115,7 @@ impl Grid {
             self.entries[*slot] = Entry {
                 x: ball.x,
                 y: ball.y,
-                radius: ball.radius,
+                radius: ball.radius + margin(ball),
                 index,
             };
         }
@@ -150,6 +157,12 @@ impl Grid {
                 }
             }
         }
+    }
+
+    /// The balls' indices in cell order (row by row), as of the last `rebuild`: balls near
+    /// each other in space are mostly near each other in this order.
+    pub fn order(&self) -> impl Iterator<Item = usize> + '_ {
+        self.entries.iter().map(|entry| entry.index)
     }
 
     /// The entries of the cells from `first` to `last` column (inclusive) of `row`.

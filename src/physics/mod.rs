@@ -8,12 +8,14 @@
 //! - [`integrator`], [`motion`], [`exact`], [`poly`]: turning forces into motion; substeps;
 //!   bouncing at the exact time of impact.
 //! - [`collisions`], [`grid`]: ball-ball contacts and the broad phase that finds them.
+//! - [`contacts`]: the iterative contact solver that piles and stacks need (clamp mode).
 //! - [`simulation`]: all balls advanced one frame, in the order above.
 //! - [`accuracy`]: closed forms to measure the solver against; [`work`]: counting effect work.
 
 pub mod accuracy;
 pub mod ball;
 pub mod collisions;
+pub mod contacts;
 pub mod effects;
 pub mod exact;
 pub mod floor;

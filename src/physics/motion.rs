@@ -19,6 +19,11 @@ pub enum CollisionMode {
     Exact,
 }
 
+/// Iterations of the contact solver per step unless the scene says otherwise: each is a
+/// sub-step with one velocity and one position pass (`docs/contacts.md` has the measurements
+/// behind the number).
+pub const DEFAULT_ITERATIONS: u32 = 12;
+
 /// The solver settings for one frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Motion {
@@ -26,6 +31,9 @@ pub struct Motion {
     /// Each frame is split into this many equal steps (at least 1).
     pub substeps: u32,
     pub collisions: CollisionMode,
+    /// Iterations (sub-steps) of the contact solver per step, at least 1; used only by scenes
+    /// with ball-ball collisions in clamp mode.
+    pub iterations: u32,
 }
 
 impl Default for Motion {
@@ -34,6 +42,7 @@ impl Default for Motion {
             integrator: Integrator::default(),
             substeps: 1,
             collisions: CollisionMode::default(),
+            iterations: DEFAULT_ITERATIONS,
         }
     }
 }

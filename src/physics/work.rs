@@ -15,10 +15,12 @@ pub enum Work {
     Floor,
     /// One ball-ball pass over the whole scene (building the broad-phase grid).
     BallCollisions,
+    /// One step of the contact solver over the whole scene (grid, walls, floors, iterations).
+    Contacts,
 }
 
 #[cfg(feature = "work-tally")]
-const KINDS: usize = 5;
+const KINDS: usize = 6;
 
 #[cfg(feature = "work-tally")]
 thread_local! {

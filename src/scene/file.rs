@@ -10,7 +10,7 @@ use super::random::Random;
 use super::spec::{BallSpec, InvalidValue, Rgb, Scene, MAX_BALLS};
 use crate::physics::floor::Floor;
 use crate::physics::integrator::Integrator;
-use crate::physics::motion::{CollisionMode, Motion};
+use crate::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
 
 /// The bundled presets: name and TOML text, one per lesson exercise.
 pub const PRESETS: &[(&str, &str)] = &[
@@ -23,6 +23,8 @@ pub const PRESETS: &[(&str, &str)] = &[
     ("billiards", include_str!("../../scenes/billiards.toml")),
     ("slope", include_str!("../../scenes/slope.toml")),
     ("drag", include_str!("../../scenes/drag.toml")),
+    ("pile", include_str!("../../scenes/pile.toml")),
+    ("pyramid", include_str!("../../scenes/pyramid.toml")),
 ];
 
 /// The lesson's colours, used where a file names none.
@@ -107,6 +109,28 @@ pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
                 name: name.to_string(),
             })?;
     parse(&format!("scenes/{name}.toml"), text, seed)
+}
+
+/// The `pile` preset with `count` balls of `radius` px spawned instead of its own: the
+/// contact study and its tests heap up different piles in the same box.
+pub fn pile(count: usize, radius: f64, seed: u64) -> Result<Scene, SceneFileError> {
+    let mut scene = preset("pile", seed)?;
+    let spawn = Spawn {
+        count,
+        radius,
+        max_speed: 4.0,
+        trail: 0,
+        colours: Vec::new(),
+        trail_colours: Vec::new(),
+    };
+    scene.balls = spawn.balls(f64::from(scene.width), f64::from(scene.height), seed);
+    scene
+        .validate()
+        .map_err(|invalid| SceneFileError::Invalid {
+            file: "scenes/pile.toml".to_string(),
+            invalid,
+        })?;
+    Ok(scene)
 }
 
 /// Parses and validates scene-file text; `file` names it in errors.
@@ -217,6 +241,8 @@ struct SceneFile {
     substeps: u32,
     #[serde(default)]
     collisions: CollisionMode,
+    #[serde(default = "default_iterations")]
+    iterations: u32,
     #[serde(default)]
     balls: Vec<BallFile>,
     spawn: Option<Spawn>,
@@ -235,6 +261,9 @@ fn default_floor_colour() -> Rgb {
 }
 fn default_substeps() -> u32 {
     1
+}
+fn default_iterations() -> u32 {
+    DEFAULT_ITERATIONS
 }
 fn default_trail() -> usize {
     20
@@ -347,6 +376,7 @@ impl SceneFile {
                 integrator: self.integrator,
                 substeps: self.substeps,
                 collisions: self.collisions,
+                iterations: self.iterations,
             },
             frames: self.frames,
             frame_ms: self.frame_ms,

@@ -28,6 +28,7 @@ pub struct Overrides {
     pub integrator: Option<Integrator>,
     pub substeps: Option<u32>,
     pub collisions: Option<CollisionMode>,
+    pub iterations: Option<u32>,
 }
 
 /// `Some(value)` unless it is zero: a zero-strength effect is no effect, and costs nothing.
@@ -70,5 +71,6 @@ impl Overrides {
         set(&mut scene.motion.integrator, self.integrator);
         set(&mut scene.motion.substeps, self.substeps);
         set(&mut scene.motion.collisions, self.collisions);
+        set(&mut scene.motion.iterations, self.iterations);
     }
 }

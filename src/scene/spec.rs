@@ -24,6 +24,8 @@ pub const MAX_TRAIL_LEN: usize = 1000;
 pub const MAX_BALLS: usize = 1_000_000;
 /// The most substeps a frame may be split into.
 pub const MAX_SUBSTEPS: u32 = 10_000;
+/// The most contact-solver iterations a step may take.
+pub const MAX_ITERATIONS: u32 = 1000;
 /// GIF stores frame delays in hundredths of a second, as a 16-bit number.
 pub const MAX_FRAME_MS: u32 = 655_350;
 
@@ -207,6 +209,13 @@ impl Scene {
                 "substeps",
                 self.motion.substeps,
                 format!("must be 1 to {MAX_SUBSTEPS}"),
+            ));
+        }
+        if !(1..=MAX_ITERATIONS).contains(&self.motion.iterations) {
+            return Err(invalid(
+                "iterations",
+                self.motion.iterations,
+                format!("must be 1 to {MAX_ITERATIONS}"),
             ));
         }
         if self.frames == 0 {

@@ -157,3 +157,17 @@ pub fn assert_golden(name: &str, actual: &RgbImage) {
         diff_path.display(),
     );
 }
+
+/// A white ball without a trail, for physics tests that never draw it.
+pub fn white_ball(x: f64, y: f64, vx: f64, vy: f64, radius: f64) -> BallSpec {
+    BallSpec {
+        x,
+        y,
+        vx,
+        vy,
+        radius,
+        colour: [255, 255, 255],
+        trail_colour: [255, 255, 255],
+        trail: 0,
+    }
+}

@@ -1,0 +1,549 @@
+//! The contact solver: in the stepped (clamp) mode, a scene with ball-ball collisions has every
+//! contact — ball with ball, ball with wall, ball with floor — solved together and
+//! iteratively, so that a pile carries its own weight and comes to rest.
+//!
+//! It is Box2D's *sequential impulses* (Erin Catto, GDC 2006) for frictionless discs, with
+//! warm starting, a rest speed below which contacts do not bounce, and Box2D v2.4's position
+//! pass; and it iterates the way Box2D v3's *soft step* and "small steps" XPBD do: each
+//! iteration is a short sub-step (gravity, one velocity pass, flight, one position pass),
+//! with the contacts found once per step. `docs/contacts.md` has the measurements that chose
+//! this over more passes per step, softer contacts, and plain substeps.
+//!
+//! One step:
+//!
+//! 1. **Find contacts** where the balls are: pairs, walls and floors that can touch within the
+//!    step (the grid grows each ball by the distance it can travel). A contact with a gap is
+//!    *speculative*: it only forbids closing by more than the gap. The solver works on a copy
+//!    of the balls in the grid's order, and a ball that can touch nothing takes the whole step
+//!    at once, as in the lesson.
+//! 2. Then, for the others, `iterations` times, for a sub-step `h` of the step:
+//!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
+//!    - **Warm start** (under gravity only): each contact pushes again with the lesser of its
+//!      last two sub-steps' impulses (the previous step's, at first). A stack that stood then
+//!      stands now, instead of its weight having to travel up through it again, one ball per
+//!      pass; an impact, a spike in one sub-step, is not pushed twice.
+//!    - **Velocity pass** (Gauss–Seidel): contact after contact, the impulse that brings its
+//!      relative normal speed to its target, added to its running total, which is never
+//!      negative (contacts push, never pull). A contact closing faster than the rest speed
+//!      that touches within `h` bounces: the target is `e` times the approach speed. Slower,
+//!      it stops (resting balls do not bounce, so a pile settles instead of buzzing).
+//!    - **Fly** `h` with the solved velocities.
+//!    - **Position pass**: overlap beyond a small slop is partly pushed out, moving positions
+//!      only, so no kinetic energy is added.
+//!
+//! Everything happens in a fixed order (the grid's), so the same balls give the same bytes.
+
+use super::ball::Ball;
+use super::collisions::coincident_normal;
+use super::effects::Effects;
+use super::exact::REST_SPEED;
+use super::grid::Grid;
+use super::integrator::Forces;
+use super::motion::Motion;
+use super::work::{tally, Work};
+
+/// The gravity [`REST_SPEED`] was derived for, px/frame²: the rest speed scales with gravity,
+/// so a scene without gravity has none and every approach bounces.
+const LESSON_GRAVITY: f64 = 0.5;
+
+/// Contacts are found this share of a radius before they could touch within the step, so a
+/// resting contact keeps its warm start from step to step.
+const PAIR_MARGIN: f64 = 0.1;
+
+/// Overlap the position pass leaves alone, as a share of the radius: correcting every last
+/// bit of it moves resting balls every step, and they never come to rest (Box2D's "linear
+/// slop" plays this part).
+pub const SLOP: f64 = 0.005;
+
+/// Share of the overlap beyond the slop the position pass removes each sub-step (Box2D's
+/// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
+const PUSH: f64 = 0.2;
+
+/// The sub-step the velocity pass works in.
+#[derive(Clone, Copy, Debug)]
+struct SubStep {
+    /// Length, frames.
+    h: f64,
+    /// Whether gravity presses the balls together. Only then does a contact carry a load
+    /// from one sub-step to the next: without it every contact's push is an impact, and
+    /// pushing again would only add energy for the next pass to take back.
+    loaded: bool,
+}
+
+/// A contact between balls `a` and `b`, the normal pointing from `a` to `b`.
+#[derive(Clone, Copy, Debug)]
+struct PairContact {
+    a: usize,
+    b: usize,
+    /// Sum of the radii, px.
+    reach: f64,
+    state: ContactState,
+    /// 1 / mass of each ball.
+    inverse_a: f64,
+    inverse_b: f64,
+}
+
+/// A contact between ball `ball` and a wall or floor, seen as a line that does not move:
+/// the gap is `centre · normal − offset`, the normal pointing into the free side.
+#[derive(Clone, Copy, Debug)]
+struct FixedContact {
+    ball: usize,
+    offset: f64,
+    state: ContactState,
+}
+
+/// What every contact tracks while it is solved.
+#[derive(Clone, Copy, Debug)]
+struct ContactState {
+    normal: [f64; 2],
+    /// Gap at the start of the sub-step, px (negative: overlap).
+    separation: f64,
+    restitution: f64,
+    /// The relative normal speed a bounce leaves it with, px/frame: `e` times the approach
+    /// speed when the contact was found, if that is above the rest speed; else 0. Spent
+    /// once it bounces.
+    rebound: f64,
+    /// `1 / (1/m_a + 1/m_b)`: the impulse that changes the relative normal speed by 1.
+    mass: f64,
+    /// Total impulse along the normal in this sub-step, never negative.
+    impulse: f64,
+    /// The total of the sub-step before.
+    previous: f64,
+    /// Names the contact from step to step, for the warm start.
+    key: u64,
+}
+
+/// The contact solver, with buffers and last step's impulses kept from step to step. A scene
+/// without ball-ball collisions (or in exact mode) never creates one.
+#[derive(Clone, Debug)]
+pub struct ContactSolver {
+    /// Ball-ball restitution (0 to 1; the scene checks it).
+    restitution: f64,
+    grid: Grid,
+    candidates: Vec<(usize, usize)>,
+    pairs: Vec<PairContact>,
+    fixed: Vec<FixedContact>,
+    /// Last step's impulses by contact key, sorted by key: the warm start.
+    remembered: Vec<(u64, f64)>,
+    /// The balls in the grid's order, without trails: what the solver moves.
+    local: Vec<Ball>,
+    /// `order[k]` is the scene's index of `local[k]`; `slot[i]` is where ball `i` is in `local`.
+    order: Vec<usize>,
+    slot: Vec<usize>,
+    /// Whether each ball (of `local`) has a contact this step, and the list of those that do.
+    touching: Vec<bool>,
+    active: Vec<usize>,
+}
+
+impl ContactSolver {
+    /// A solver for ball-ball contacts that keep `restitution` of the approach speed.
+    pub fn new(restitution: f64) -> ContactSolver {
+        ContactSolver {
+            restitution,
+            grid: Grid::new(),
+            candidates: Vec::new(),
+            pairs: Vec::new(),
+            fixed: Vec::new(),
+            remembered: Vec::new(),
+            local: Vec::new(),
+            order: Vec::new(),
+            slot: Vec::new(),
+            touching: Vec::new(),
+            active: Vec::new(),
+        }
+    }
+
+    /// Advances every ball one frame (its substeps) under `effects`, with `motion`'s
+    /// integrator and iterations; trails are the caller's business.
+    pub fn step(&mut self, scene_balls: &mut [Ball], effects: &Effects, motion: &Motion) {
+        let (steps, whole) = motion.plan(effects);
+        let iterations = motion.iterations;
+        let forces = Forces::new(effects).split(steps * iterations);
+        let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
+        let rest_speed = REST_SPEED * gravity / LESSON_GRAVITY;
+        let sub = SubStep {
+            h: forces.dt,
+            loaded: gravity > 0.0,
+        };
+        let dt = 1.0 / f64::from(steps);
+        for _ in 0..steps {
+            tally(Work::Contacts);
+            self.find(scene_balls, effects, dt, rest_speed);
+            self.recall();
+            self.sort_out_touching(scene_balls.len());
+            // The solver works on its own copy of the balls, in the grid's order: contacts
+            // then touch balls close together in memory, which keeps 100,000 balls fast.
+            let mut local = std::mem::take(&mut self.local);
+            let balls = &mut local[..];
+            // A ball that can touch nothing in this step takes it in one go, as in the lesson.
+            for (ball, &touching) in balls.iter_mut().zip(&self.touching) {
+                if !touching {
+                    motion.integrator.step(ball, &whole);
+                }
+            }
+            for _ in 0..iterations {
+                for &i in &self.active {
+                    motion.integrator.kick_before(&mut balls[i], &forces);
+                }
+                self.warm_start(balls);
+                self.solve_velocities(balls, sub);
+                for &i in &self.active {
+                    motion.integrator.fly(&mut balls[i], &forces, forces.dt);
+                    motion.integrator.kick_after(&mut balls[i], &forces);
+                }
+                self.solve_positions(balls);
+            }
+            for (copy, &i) in local.iter().zip(&self.order) {
+                let ball = &mut scene_balls[i];
+                (ball.x, ball.y, ball.vx, ball.vy) = (copy.x, copy.y, copy.vx, copy.vy);
+                if let Some(walls) = &effects.walls {
+                    ball.keep_inside(walls);
+                }
+            }
+            self.local = local;
+            self.remember();
+        }
+    }
+
+    /// This step's contacts: ball pairs from the grid, in its order; then each ball's walls
+    /// and floors, in ball order; each only if it can touch within the step `dt`.
+    fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64, rest_speed: f64) {
+        let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
+        // How far gravity alone can move a ball in the step.
+        let fall = gravity * dt * dt;
+        // How far each ball can get in this step, and a little more, so that it stops at a
+        // surface instead of passing into it, and a resting pair is found again next step.
+        let margin = |ball: &Ball| {
+            (ball.vx * ball.vx + ball.vy * ball.vy).sqrt() * dt + fall + PAIR_MARGIN * ball.radius
+        };
+        // Whether a contact at `separation` closing at `approach` (negative: closing) can
+        // touch within the step, with `slack` to spare.
+        let can_touch = |separation: f64, approach: f64, fall: f64, slack: f64| {
+            separation + approach.min(0.0) * dt - fall < slack
+        };
+        self.grid.rebuild_with_margins(balls, margin);
+        self.grid.overlapping_pairs(&mut self.candidates);
+        self.order.clear();
+        self.order.extend(self.grid.order());
+        self.slot.resize(balls.len(), 0);
+        for (k, &i) in self.order.iter().enumerate() {
+            self.slot[i] = k;
+        }
+        self.local.clear();
+        self.local.extend(self.order.iter().map(|&i| {
+            let ball = &balls[i];
+            Ball::new(ball.x, ball.y, ball.vx, ball.vy, ball.radius, 0)
+        }));
+        let balls = &self.local;
+
+        self.pairs.clear();
+        for &(i, j) in &self.candidates {
+            // `i < j` in the scene; the key names the pair by them, which do not change.
+            let key = (j as u64) << 32 | i as u64;
+            let (a, b) = (
+                self.slot[i].min(self.slot[j]),
+                self.slot[i].max(self.slot[j]),
+            );
+            let (ball_a, ball_b) = (&balls[a], &balls[b]);
+            let reach = ball_a.radius + ball_b.radius;
+            let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
+            let mass = mass_a * mass_b / (mass_a + mass_b);
+            let (nx, ny) = coincident_normal(j);
+            let (separation, normal) = pair_gap(ball_a, ball_b, reach, [nx, ny]);
+            let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
+            // Both balls fall alike, but a ball pushed from above can close the gap by as
+            // much as gravity moves it.
+            if !can_touch(separation, approach, fall, PAIR_MARGIN * reach / 2.0) {
+                continue;
+            }
+            self.pairs.push(PairContact {
+                a,
+                b,
+                reach,
+                state: ContactState::new(
+                    normal,
+                    separation,
+                    self.restitution,
+                    approach,
+                    rest_speed,
+                    mass,
+                    key,
+                ),
+                inverse_a: 1.0 / mass_a,
+                inverse_b: 1.0 / mass_b,
+            });
+        }
+
+        self.fixed.clear();
+        for (k, ball) in balls.iter().enumerate() {
+            let i = self.order[k];
+            let centre = [ball.x, ball.y];
+            let mut touch = |id: u64, normal: [f64; 2], surface: f64, restitution: f64| {
+                let offset = surface + ball.radius;
+                let separation = dot(centre, normal) - offset;
+                let approach = dot([ball.vx, ball.vy], normal);
+                if can_touch(separation, approach, fall, PAIR_MARGIN * ball.radius) {
+                    self.fixed.push(FixedContact {
+                        ball: k,
+                        offset,
+                        state: ContactState::new(
+                            normal,
+                            separation,
+                            restitution,
+                            approach,
+                            rest_speed,
+                            mass(ball),
+                            (i as u64) << 32 | (u64::from(u32::MAX) - id),
+                        ),
+                    });
+                }
+            };
+            if let Some(walls) = &effects.walls {
+                tally(Work::Walls);
+                // Each wall as a line: its inward normal, and `normal · point` on it.
+                let sides = [
+                    ([1.0, 0.0], 0.0),
+                    ([-1.0, 0.0], -walls.width),
+                    ([0.0, 1.0], 0.0),
+                    ([0.0, -1.0], -walls.height),
+                ];
+                for (id, (normal, surface)) in sides.into_iter().enumerate() {
+                    touch(id as u64, normal, surface, walls.damping);
+                }
+            }
+            for (k, floor) in effects.floors.iter().enumerate() {
+                tally(Work::Floor);
+                let (normal, distance) = floor.nearest(centre);
+                touch(
+                    4 + k as u64,
+                    normal,
+                    dot(centre, normal) - distance,
+                    floor.damping,
+                );
+            }
+        }
+    }
+
+    /// Marks the balls with at least one contact this step, and lists them in order.
+    fn sort_out_touching(&mut self, count: usize) {
+        self.touching.clear();
+        self.touching.resize(count, false);
+        for contact in &self.pairs {
+            self.touching[contact.a] = true;
+            self.touching[contact.b] = true;
+        }
+        for contact in &self.fixed {
+            self.touching[contact.ball] = true;
+        }
+        self.active.clear();
+        self.active.extend((0..count).filter(|&i| self.touching[i]));
+    }
+
+    /// Gives each contact the impulse it ended the last step with (0 if it is new).
+    fn recall(&mut self) {
+        let remembered = &self.remembered;
+        let states = self.pairs.iter_mut().map(|c| &mut c.state);
+        for state in states.chain(self.fixed.iter_mut().map(|c| &mut c.state)) {
+            state.impulse = remembered
+                .binary_search_by_key(&state.key, |&(key, _)| key)
+                .map_or(0.0, |found| remembered[found].1);
+            state.previous = state.impulse;
+        }
+    }
+
+    /// Applies each contact's impulse of the last sub-step again, and measures its gap anew.
+    fn warm_start(&mut self, balls: &mut [Ball]) {
+        for contact in &mut self.pairs {
+            let (a, b) = two(balls, contact.a, contact.b);
+            let (separation, normal) = pair_gap(a, b, contact.reach, contact.state.normal);
+            (contact.state.separation, contact.state.normal) = (separation, normal);
+            let carried = contact.state.carry();
+            contact.push_velocities(a, b, carried);
+        }
+        for contact in &mut self.fixed {
+            let ball = &mut balls[contact.ball];
+            contact.state.separation = contact.gap(ball);
+            let impulse = contact.state.carry() / contact.state.mass;
+            ball.vx += impulse * contact.state.normal[0];
+            ball.vy += impulse * contact.state.normal[1];
+        }
+    }
+
+    /// One Gauss–Seidel pass over every contact's velocity.
+    fn solve_velocities(&mut self, balls: &mut [Ball], sub: SubStep) {
+        for contact in &mut self.pairs {
+            let (a, b) = two(balls, contact.a, contact.b);
+            let [nx, ny] = contact.state.normal;
+            let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
+            let change = contact.state.solve(speed, sub);
+            contact.push_velocities(a, b, change);
+        }
+        for contact in &mut self.fixed {
+            let ball = &mut balls[contact.ball];
+            let [nx, ny] = contact.state.normal;
+            let change = contact.state.solve(ball.vx * nx + ball.vy * ny, sub) / contact.state.mass;
+            ball.vx += change * nx;
+            ball.vy += change * ny;
+        }
+    }
+
+    /// One Gauss–Seidel pass that pushes overlapping contacts partly apart, positions only.
+    fn solve_positions(&mut self, balls: &mut [Ball]) {
+        for contact in &self.pairs {
+            let (a, b) = two(balls, contact.a, contact.b);
+            let allowed = SLOP * contact.reach / 2.0;
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let closest = contact.reach - allowed;
+            if dx * dx + dy * dy >= closest * closest {
+                continue; // the common case, without a square root
+            }
+            let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, contact.state.normal);
+            if separation < -allowed {
+                // Each ball moves its share: the lighter one more.
+                let push = -(separation + allowed) * PUSH * contact.state.mass;
+                let (share_a, share_b) = (push * contact.inverse_a, push * contact.inverse_b);
+                a.x -= share_a * nx;
+                a.y -= share_a * ny;
+                b.x += share_b * nx;
+                b.y += share_b * ny;
+            }
+        }
+        for contact in &self.fixed {
+            let ball = &mut balls[contact.ball];
+            let separation = contact.gap(ball);
+            let allowed = SLOP * ball.radius;
+            if separation < -allowed {
+                let push = -(separation + allowed) * PUSH;
+                ball.x += push * contact.state.normal[0];
+                ball.y += push * contact.state.normal[1];
+            }
+        }
+    }
+
+    /// Keeps the impulses for the next step's warm start.
+    fn remember(&mut self) {
+        self.remembered.clear();
+        let states = self.pairs.iter().map(|c| &c.state);
+        self.remembered.extend(
+            states
+                .chain(self.fixed.iter().map(|c| &c.state))
+                .map(|state| (state.key, state.least()))
+                .filter(|&(_, impulse)| impulse > 0.0),
+        );
+        self.remembered.sort_unstable_by_key(|&(key, _)| key);
+    }
+}
+
+impl ContactState {
+    fn new(
+        normal: [f64; 2],
+        separation: f64,
+        restitution: f64,
+        approach: f64,
+        rest_speed: f64,
+        mass: f64,
+        key: u64,
+    ) -> ContactState {
+        ContactState {
+            normal,
+            separation,
+            restitution,
+            rebound: rebound(restitution, approach, rest_speed),
+            mass,
+            impulse: 0.0,
+            previous: 0.0,
+            key,
+        }
+    }
+
+    /// Starts a sub-step: the impulse to push with again, which becomes the running total.
+    /// The lesser of the last two sub-steps' totals: a resting load is the same in both, an
+    /// impact is a spike in one, and pushing it again would bounce the balls apart.
+    fn carry(&mut self) -> f64 {
+        let carried = self.least();
+        self.previous = self.impulse;
+        self.impulse = carried;
+        carried
+    }
+
+    /// The lesser of the last two sub-steps' totals.
+    fn least(&self) -> f64 {
+        self.impulse.min(self.previous)
+    }
+
+    /// The velocity pass for one contact whose relative normal speed is `speed` (negative:
+    /// closing): updates the running total and returns the impulse to apply now.
+    fn solve(&mut self, speed: f64, sub: SubStep) -> f64 {
+        let bounces = self.rebound > 0.0 && self.separation + speed * sub.h < 0.0;
+        let target = if bounces {
+            // Never faster than `e` times the approach now: other contacts may have slowed
+            // it since the contact was found, and a bounce must not add energy.
+            std::mem::take(&mut self.rebound).min(-self.restitution * speed)
+        } else {
+            // Resting, or speculative: close by no more than the gap within the sub-step.
+            -self.separation.max(0.0) / sub.h
+        };
+        let total = (self.impulse + self.mass * (target - speed)).max(0.0);
+        let change = total - self.impulse;
+        // A bounce is over once the balls part: it is not pushed again in the next sub-step.
+        self.impulse = if bounces || !sub.loaded { 0.0 } else { total };
+        change
+    }
+}
+
+impl PairContact {
+    /// Gives `b` the impulse `impulse` along the normal and `a` the opposite one.
+    fn push_velocities(&self, a: &mut Ball, b: &mut Ball, impulse: f64) {
+        let [nx, ny] = self.state.normal;
+        let (da, db) = (impulse * self.inverse_a, impulse * self.inverse_b);
+        a.vx -= da * nx;
+        a.vy -= da * ny;
+        b.vx += db * nx;
+        b.vy += db * ny;
+    }
+}
+
+impl FixedContact {
+    /// The gap between the ball and the line, px.
+    fn gap(&self, ball: &Ball) -> f64 {
+        dot([ball.x, ball.y], self.state.normal) - self.offset
+    }
+}
+
+/// The parting speed a contact closing at `approach` (negative: closing) bounces to, or 0 if
+/// that would be below `rest_speed`.
+fn rebound(restitution: f64, approach: f64, rest_speed: f64) -> f64 {
+    let rebound = -restitution * approach;
+    if rebound > rest_speed {
+        rebound
+    } else {
+        0.0
+    }
+}
+
+/// Mass of a ball: radius², as in ball-ball collisions (flat discs of equal density).
+fn mass(ball: &Ball) -> f64 {
+    ball.radius * ball.radius
+}
+
+fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
+    a[0] * b[0] + a[1] * b[1]
+}
+
+/// The gap between two balls whose radii add up to `reach`, and the normal from `a` to `b`
+/// (`fallback` if their centres coincide).
+fn pair_gap(a: &Ball, b: &Ball, reach: f64, fallback: [f64; 2]) -> (f64, [f64; 2]) {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let distance = (dx * dx + dy * dy).sqrt();
+    if distance > 0.0 {
+        (distance - reach, [dx / distance, dy / distance])
+    } else {
+        (-reach, fallback)
+    }
+}
+
+/// Balls `a` and `b` (`a < b`), both mutable.
+fn two(balls: &mut [Ball], a: usize, b: usize) -> (&mut Ball, &mut Ball) {
+    let (head, tail) = balls.split_at_mut(b);
+    (&mut head[a], &mut tail[0])
+}
