@@ -274,7 +274,7 @@ fn balls_flung_far_away_or_to_infinity_do_not_break_the_grid() {
     let mut grid = Grid::new();
     grid.rebuild(&balls);
     let mut found = Vec::new();
-    grid.overlapping_pairs(&mut found);
+    grid.overlapping_pairs(&mut found, usize::MAX);
     assert_eq!(vec![(0, 1)], found);
 }
 
@@ -290,7 +290,7 @@ proptest! {
         let mut grid = Grid::new();
         grid.rebuild(&balls);
         let mut found = Vec::new();
-        grid.overlapping_pairs(&mut found);
+        grid.overlapping_pairs(&mut found, usize::MAX);
         found.sort_unstable();
         let expected = brute_force_pairs(&balls);
         prop_assert_eq!(&expected, &found, "{} balls spread over {} px", balls.len(), spread);

@@ -55,6 +55,11 @@ const PAIR_MARGIN: f64 = 0.1;
 /// slop" plays this part).
 pub const SLOP: f64 = 0.005;
 
+/// The most ball-ball contacts a step takes on, per ball. A pile of equal balls touches at
+/// most six neighbours each; balls spawned on top of one another could make N² pairs, and
+/// the memory for them. Pairs beyond this wait for a later step, once the pile has spread.
+pub const MAX_PAIRS_PER_BALL: usize = 16;
+
 /// Share of the overlap beyond the slop the position pass removes each sub-step (Box2D's
 /// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
 const PUSH: f64 = 0.2;
@@ -222,7 +227,8 @@ impl ContactSolver {
             separation + approach.min(0.0) * dt - fall < slack
         };
         self.grid.rebuild_with_margins(balls, margin);
-        self.grid.overlapping_pairs(&mut self.candidates);
+        let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
+        self.grid.overlapping_pairs(&mut self.candidates, limit);
         self.order.clear();
         self.order.extend(self.grid.order());
         self.slot.resize(balls.len(), 0);

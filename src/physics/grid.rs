@@ -121,11 +121,16 @@ impl Grid {
         }
     }
 
-    /// Replaces the contents of `pairs` with every pair of balls that overlap, in the order
-    /// of [`Grid::for_each_overlapping_pair`].
-    pub fn overlapping_pairs(&self, pairs: &mut Vec<(usize, usize)>) {
+    /// Replaces the contents of `pairs` with the pairs of balls that overlap, in the order
+    /// of [`Grid::for_each_overlapping_pair`], at most `limit` of them: balls piled on one
+    /// spot make N² pairs, and memory must not follow.
+    pub fn overlapping_pairs(&self, pairs: &mut Vec<(usize, usize)>, limit: usize) {
         pairs.clear();
-        self.for_each_overlapping_pair(|i, j| pairs.push((i, j)));
+        self.for_each_overlapping_pair(|i, j| {
+            if pairs.len() < limit {
+                pairs.push((i, j));
+            }
+        });
     }
 
     /// Calls `found(i, j)` for every pair of balls that overlap (centres closer than the sum

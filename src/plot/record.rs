@@ -60,25 +60,23 @@ pub struct Recording {
     frames: u32,
 }
 
-/// The broad phase's grid and its list of pairs, kept from frame to frame.
+/// The broad phase's grid, kept from frame to frame.
 #[derive(Clone, Debug, Default)]
 struct Overlaps {
     grid: Grid,
-    pairs: Vec<(usize, usize)>,
 }
 
 impl Overlaps {
-    /// How deep the most overlapping pair overlaps, px (0 if none does).
+    /// How deep the most overlapping pair overlaps, px (0 if none does). Pairs are looked at
+    /// as the grid finds them, never stored: balls piled on one spot make N² of them.
     fn deepest(&mut self, balls: &[Ball]) -> f64 {
         self.grid.rebuild(balls);
-        self.grid.overlapping_pairs(&mut self.pairs);
-        self.pairs
-            .iter()
-            .map(|&(i, j)| {
-                let (a, b) = (&balls[i], &balls[j]);
-                a.radius + b.radius - (b.x - a.x).hypot(b.y - a.y)
-            })
-            .fold(0.0, f64::max)
+        let mut deepest: f64 = 0.0;
+        self.grid.for_each_overlapping_pair(|i, j| {
+            let (a, b) = (&balls[i], &balls[j]);
+            deepest = deepest.max(a.radius + b.radius - (b.x - a.x).hypot(b.y - a.y));
+        });
+        deepest
     }
 }
 

@@ -2,10 +2,12 @@
 //!
 //! - [`palette`]: the colour table, built once per scene, with the trail's faded shades.
 //! - [`ellipse`]: solid circles, exactly the pixels Pillow's `ImageDraw.ellipse` fills.
+//! - [`line`]: one-pixel floor segments.
 //! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
 //! - [`png`]: one frame as an RGB PNG.
 
 pub mod ellipse;
+pub mod line;
 pub mod palette;
 pub mod png;
 pub mod raster;

@@ -1,6 +1,6 @@
 //! The software rasteriser: one frame of balls and trails, drawn straight into palette
 //! indices on a one-channel image whose values are indices. Circles are Pillow's, pixel for
-//! pixel ([`super::ellipse`]); floors are imageproc's line segments, clipped to the canvas.
+//! pixel ([`super::ellipse`]); floors are one-pixel lines ([`super::line`]), clipped to the canvas.
 //!
 //! Drawing only: it reads where the balls are and never moves them.
 
@@ -8,9 +8,9 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use image::{GrayImage, Luma};
-use imageproc::drawing::draw_line_segment_mut;
 
 use super::ellipse::fill_circle;
+use super::line::draw_line;
 use super::palette::{
     drawn_dots, fade, fade_levels, quantised_fade, shade, Colours, IndexedFrame, Palette,
     TooManyColours,
@@ -175,7 +175,7 @@ impl Renderer {
         for floor in &self.floors {
             if let Some((from, to)) = clip_segment(floor.from, floor.to, canvas) {
                 let point = |[x, y]: [f64; 2]| (x as f32, y as f32);
-                draw_line_segment_mut(frame, point(from), point(to), Luma([self.floor]));
+                draw_line(frame, point(from), point(to), self.floor);
             }
         }
         for (ball, style) in balls.iter().zip(&self.styles) {
@@ -192,7 +192,7 @@ impl Renderer {
 }
 
 /// The segment `from`-`to`, cut along its longer axis to one pixel beyond the canvas
-/// (`canvas` = width, height), in floating point: imageproc walks the longer axis pixel by
+/// (`canvas` = width, height), in floating point: the line is walked along the longer axis pixel by
 /// pixel, so a floor from -1e30 to 1e30 then costs no more than one across the canvas.
 /// `None` when it misses the canvas along that axis. Ends already inside stay, to the bit.
 fn clip_segment(from: [f64; 2], to: [f64; 2], canvas: [f64; 2]) -> Option<([f64; 2], [f64; 2])> {
