@@ -15,6 +15,7 @@ pub mod accuracy;
 pub mod ball;
 pub mod collisions;
 pub mod effects;
+pub mod events;
 pub mod exact;
 pub mod floor;
 pub mod grid;
@@ -22,6 +23,7 @@ pub mod integrator;
 pub mod motion;
 pub mod poly;
 pub mod simulation;
+pub mod toi;
 pub mod walls;
 pub mod work;
 

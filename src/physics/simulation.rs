@@ -3,7 +3,8 @@
 use super::ball::Ball;
 use super::collisions::Collisions;
 use super::effects::Effects;
-use super::motion::Motion;
+use super::events::system::{EventCounts, EventDriven};
+use super::motion::{CollisionMode, Motion};
 
 /// The moving state of a scene.
 #[derive(Clone, Debug)]
@@ -13,6 +14,8 @@ pub struct Simulation {
     motion: Motion,
     /// Present only if the scene calls for ball-ball collisions (it owns the grid).
     collisions: Option<Collisions>,
+    /// Instead of `collisions` in exact mode: every contact at its moment (`super::events`).
+    events: Option<EventDriven>,
 }
 
 impl Simulation {
@@ -24,11 +27,13 @@ impl Simulation {
         motion: Motion,
         restitution: Option<f64>,
     ) -> Simulation {
+        let exact = motion.collisions == CollisionMode::Exact;
         Simulation {
             balls,
             effects,
             motion,
-            collisions: restitution.map(Collisions::new),
+            collisions: restitution.filter(|_| !exact).map(Collisions::new),
+            events: restitution.filter(|_| exact).map(EventDriven::new),
         }
     }
 
@@ -38,6 +43,15 @@ impl Simulation {
     /// once per frame, for all balls.
     pub fn step(&mut self) {
         let (steps, forces) = self.motion.plan(&self.effects);
+        if let Some(events) = &mut self.events {
+            // Exact mode with ball-ball collisions: every contact at its moment.
+            let integrator = self.motion.integrator;
+            events.frame(&mut self.balls, integrator, steps, &forces, &self.effects);
+            for ball in &mut self.balls {
+                ball.record_trail();
+            }
+            return;
+        }
         for _ in 0..steps {
             for ball in &mut self.balls {
                 self.motion.step(ball, &self.effects, &forces);
@@ -56,9 +70,14 @@ impl Simulation {
         }
     }
 
-    /// Whether ball-ball collisions (and so the broad-phase grid) exist in this simulation.
+    /// Whether ball-ball collisions (and so a broad-phase grid) exist in this simulation.
     pub fn has_ball_collisions(&self) -> bool {
-        self.collisions.is_some()
+        self.collisions.is_some() || self.events.is_some()
+    }
+
+    /// In exact mode with ball-ball collisions, what the last frame's events were.
+    pub fn event_counts(&self) -> Option<EventCounts> {
+        self.events.as_ref().map(EventDriven::counts)
     }
 
     /// The balls as they are now, in scene order.
