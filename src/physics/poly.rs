@@ -134,6 +134,9 @@ impl Poly {
     /// The first crossing below zero in `[0, end]` as two adjacent times: the last one still
     /// ≥ 0 and the first one below. Assumes `at(0) ≥ 0`.
     pub fn first_crossing(&self, end: f64) -> Option<(f64, f64)> {
+        if self.degree == 1 {
+            return self.line_crossing(end);
+        }
         let mut left = 0.0;
         let derivative_roots = self.derivative().roots(0.0, end);
         for &right in derivative_roots.t[..derivative_roots.len]
@@ -146,6 +149,28 @@ impl Poly {
             left = right;
         }
         None
+    }
+
+    /// `first_crossing` for a straight line: the root by one division, checked against its
+    /// neighbours; bisection only if rounding puts it more than a few numbers off (a slope so
+    /// small that the line stays at zero for a stretch of tiny numbers).
+    fn line_crossing(&self, end: f64) -> Option<(f64, f64)> {
+        let (value, slope) = (self.c[0], self.c[1]);
+        if slope >= 0.0 || self.at(end) >= 0.0 {
+            return None;
+        }
+        let mut before = (value / -slope).clamp(0.0, end);
+        for _ in 0..4 {
+            if self.at(before) >= 0.0 {
+                break;
+            }
+            before = before.next_down().max(0.0);
+        }
+        let after = before.next_up();
+        if self.at(before) >= 0.0 && self.at(after) < 0.0 {
+            return Some((before, after));
+        }
+        Some(self.bisect(0.0, end))
     }
 
     /// Every root strictly inside `(start, end)` where the sign changes, in increasing order.
@@ -202,6 +227,23 @@ mod tests {
         let p = Poly::new(&[1.0, 0.0, -1.0]);
         let t = p.first_negative(2.0).expect("a root in [0, 2]");
         assert!((t - 1.0).abs() < 1e-15, "expected 1, got {t}");
+    }
+
+    #[test]
+    fn a_falling_line_crosses_between_two_adjacent_numbers() {
+        // 1 − 3t crosses at 1/3, which no f64 holds exactly.
+        let p = Poly::new(&[1.0, -3.0]);
+        let (before, after) = p.first_crossing(1.0).expect("a crossing");
+        assert!(
+            p.at(before) >= 0.0 && p.at(after) < 0.0,
+            "{before} and {after} must bracket it"
+        );
+        assert_eq!(before.next_up(), after, "adjacent numbers");
+        assert!(
+            (before - 1.0 / 3.0).abs() < 1e-15,
+            "expected 1/3, got {before}"
+        );
+        assert_eq!(p.first_crossing(0.3), None, "not yet by 0.3");
     }
 
     #[test]

@@ -25,16 +25,18 @@ pub const TOUCH_SPEED: f64 = 1e-9;
 /// as `relative` come within `reach` of each other while approaching, if they do.
 pub fn first_touch(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
     if relative[0].degree() <= 1 && relative[1].degree() <= 1 {
-        straight(relative, reach, end)
+        let [offset, velocity] = [0, 1].map(|i| relative.map(|p| p.coefficient(i)));
+        straight(offset, velocity, reach, end)
     } else {
         curved(relative, reach, end)
     }
 }
 
-/// Relative motion in a straight line: the smaller root of `a·τ² + 2b·τ + c = 0`.
-fn straight(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
-    let [dx, dy] = relative.map(|p| p.coefficient(0));
-    let [vx, vy] = relative.map(|p| p.coefficient(1));
+/// `first_touch` for centres whose offset moves in a straight line, `offset + velocity·τ`:
+/// the smaller root of `a·τ² + 2b·τ + c = 0`.
+pub fn straight(offset: [f64; 2], velocity: [f64; 2], reach: f64, end: f64) -> Option<f64> {
+    let [dx, dy] = offset;
+    let [vx, vy] = velocity;
     let b = dx * vx + dy * vy;
     if b >= -TOUCH_SPEED * reach {
         return None; // parting, or too slow to count as approaching: never closer in a line

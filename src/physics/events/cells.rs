@@ -124,17 +124,18 @@ impl Cells {
 
     /// When ball `i`, whose centre moves along `path`, first leaves its cell within `left`
     /// frames, along which axis and towards which side.
-    pub fn exit(&self, i: usize, path: &[Poly; 2], left: f64) -> Option<(f64, usize, i32)> {
+    pub fn exit(&self, i: usize, path: &[Poly; 2], left: f64) -> Option<(f64, u8, i8)> {
         let counts = [self.columns, self.rows];
         let origin = [self.left, self.top];
-        let mut first: Option<(f64, usize, i32)> = None;
-        for axis in 0..2 {
-            let index = self.at[i][axis];
-            let low = origin[axis] + index as f64 * self.size - self.margin;
+        let mut first: Option<(f64, u8, i8)> = None;
+        for axis in 0..2u8 {
+            let a = usize::from(axis);
+            let index = self.at[i][a];
+            let low = origin[a] + index as f64 * self.size - self.margin;
             let high = low + self.size + 2.0 * self.margin;
             // Distances to the far side of each border, which fall below zero on leaving.
-            let ahead = (index + 1 < counts[axis]).then(|| (path[axis].scale(-1.0).plus(high), 1));
-            let behind = (index > 0).then(|| (path[axis].plus(-low), -1));
+            let ahead = (index + 1 < counts[a]).then(|| (path[a].scale(-1.0).plus(high), 1));
+            let behind = (index > 0).then(|| (path[a].plus(-low), -1));
             for (distance, towards) in ahead.into_iter().chain(behind) {
                 if let Some(time) = distance.first_negative(left) {
                     if first.is_none_or(|(earliest, _, _)| time < earliest) {
@@ -147,9 +148,10 @@ impl Cells {
     }
 
     /// Moves ball `i` into the next cell along `axis` towards `towards`.
-    pub fn shift(&mut self, i: usize, axis: usize, towards: i32) {
+    pub fn shift(&mut self, i: usize, axis: u8, towards: i8) {
         self.unlink(i);
-        self.at[i][axis] = self.at[i][axis].wrapping_add_signed(towards as isize);
+        let at = &mut self.at[i][usize::from(axis)];
+        *at = at.wrapping_add_signed(isize::from(towards));
         self.link(i);
     }
 }

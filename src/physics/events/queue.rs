@@ -9,17 +9,16 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use super::super::exact::Contact;
-
 /// What happens to ball `ball` at an event.
 #[derive(Clone, Copy, Debug)]
 pub enum What {
     /// It touches ball number `.0`.
     Ball(u32),
-    /// It touches a wall, a floor's face or a floor's end.
-    Contact(Contact),
+    /// It touches a wall, a floor's face or a floor's end (which one the caller keeps: only
+    /// the latest prediction per ball is ever current, and a small event moves fast in the heap).
+    Contact,
     /// It leaves its grid cell, along `axis` (0 = x, 1 = y), towards `+1` or `−1`.
-    Cell { axis: usize, towards: i32 },
+    Cell { axis: u8, towards: i8 },
 }
 
 /// One predicted event.
@@ -29,9 +28,6 @@ pub struct Event {
     pub time: f64,
     pub ball: u32,
     pub what: What,
-    /// Order of prediction: the same time comes out first-predicted first, so ties are
-    /// broken the same way on every run.
-    order: u64,
     /// The counters of `ball` and of the other ball (if any) when this was predicted.
     counts: [u32; 2],
 }
@@ -51,12 +47,13 @@ impl PartialOrd for Event {
 }
 
 impl Ord for Event {
-    /// Reversed, so that `BinaryHeap` (a max-heap) pops the earliest event.
+    /// Reversed, so that `BinaryHeap` (a max-heap) pops the earliest event. Ties come out in
+    /// an order fixed by the sequence of pushes and pops, the same on every run.
     fn cmp(&self, other: &Self) -> Ordering {
         other
             .time
             .total_cmp(&self.time)
-            .then(other.order.cmp(&self.order))
+            .then(other.ball.cmp(&self.ball))
     }
 }
 
@@ -66,7 +63,6 @@ pub struct Queue {
     heap: BinaryHeap<Event>,
     /// Per ball: how often it has changed course this step.
     counts: Vec<u32>,
-    predicted: u64,
 }
 
 impl Queue {
@@ -75,7 +71,6 @@ impl Queue {
         self.heap.clear();
         self.counts.clear();
         self.counts.resize(balls, 0);
-        self.predicted = 0;
     }
 
     /// Adds an event at `time` for `ball`.
@@ -88,10 +83,8 @@ impl Queue {
             time,
             ball: ball as u32,
             what,
-            order: self.predicted,
             counts: [self.counts[ball], partner],
         });
-        self.predicted += 1;
     }
 
     /// Marks every event predicted so far for `ball` as stale: it changed course.

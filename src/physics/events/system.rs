@@ -32,7 +32,7 @@
 
 use super::super::ball::Ball;
 use super::super::effects::Effects;
-use super::super::exact::{self, Bounds, Support, REST_SPEED};
+use super::super::exact::{self, Bounds, Contact, Support, REST_SPEED};
 use super::super::floor::dot;
 use super::super::integrator::{Forces, Integrator};
 use super::super::poly::Poly;
@@ -75,6 +75,8 @@ pub struct EventDriven {
     /// Per ball: the time its state is valid at, and the forces of its flight this step.
     clock: Vec<f64>,
     flight: Vec<Forces>,
+    /// Per ball: the wall or floor its pending contact event is with.
+    contact: Vec<Option<Contact>>,
     /// Per ball: the surfaces it rests on at the start of the step.
     support: Vec<Support>,
     /// Per ball: whether something holds it up (part of gravity removed).
@@ -102,6 +104,7 @@ impl EventDriven {
             cells: Cells::default(),
             clock: Vec::new(),
             flight: Vec::new(),
+            contact: Vec::new(),
             support: Vec::new(),
             held: Vec::new(),
             last_collision: Vec::new(),
@@ -167,8 +170,10 @@ impl EventDriven {
                     self.predict(balls, i, &step, false);
                     self.predict(balls, j, &step, false);
                 }
-                What::Contact(contact) => {
-                    contact.bounce(&mut balls[i], forces);
+                What::Contact => {
+                    if let Some(contact) = self.contact[i] {
+                        contact.bounce(&mut balls[i], forces);
+                    }
                     self.flight[i] = Bounds::of(&balls[i], effects).supported(&balls[i], forces);
                     self.held[i] = self.flight[i] != *forces;
                     self.queue.changed(i);
@@ -211,6 +216,8 @@ impl EventDriven {
         self.queue.reset(balls.len());
         self.clock.clear();
         self.clock.resize(balls.len(), 0.0);
+        self.contact.clear();
+        self.contact.resize(balls.len(), None);
         self.support.clear();
         self.support.extend(
             balls
@@ -281,28 +288,50 @@ impl EventDriven {
         let ball = &balls[i];
         let path = step.integrator.path(ball, &self.flight[i]);
         let bounds = Bounds::of(ball, step.effects);
-        if let Some((time, contact)) = bounds.first_contact(ball, &path, left) {
-            self.queue.push(now + time, i, What::Contact(contact));
-        }
+        self.contact[i] = bounds
+            .first_contact(ball, &path, left)
+            .map(|(time, contact)| {
+                self.queue.push(now + time, i, What::Contact);
+                contact
+            });
         if let Some((time, axis, towards)) = self.cells.exit(i, &path, left) {
             self.queue.push(now + time, i, What::Cell { axis, towards });
         }
         let (queue, cells) = (&mut self.queue, &self.cells);
         let (clock, flight) = (&self.clock, &self.flight);
+        // Straight flights (the Euler methods, or nothing to curve them) need no polynomials.
+        let straight = |forces: &Forces| {
+            matches!(
+                step.integrator,
+                Integrator::ExplicitEuler | Integrator::SemiImplicitEuler
+            ) || (forces.gravity.is_none() && forces.drag.is_none())
+        };
+        let mine_straight = straight(&flight[i]);
         cells.neighbours(i, |j| {
             if j == i || (starting && j < i) {
                 return;
             }
-            // The other ball as it will be now, so both flights start at the same moment.
             let other = &balls[j];
-            let mut there = Ball::new(other.x, other.y, other.vx, other.vy, other.radius, 0);
+            let reach = ball.radius + other.radius;
             let behind = now - clock[j];
-            if behind > 0.0 {
-                step.integrator.fly(&mut there, &flight[j], behind);
-            }
-            let theirs = step.integrator.path(&there, &flight[j]);
-            let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis].minus_poly(&path[axis]));
-            if let Some(time) = toi::first_touch(&relative, ball.radius + other.radius, left) {
+            let touch = if mine_straight && straight(&flight[j]) {
+                let offset = [
+                    other.x + other.vx * behind - ball.x,
+                    other.y + other.vy * behind - ball.y,
+                ];
+                let velocity = [other.vx - ball.vx, other.vy - ball.vy];
+                toi::straight(offset, velocity, reach, left)
+            } else {
+                // The other ball as it will be now, so both flights start at the same moment.
+                let mut there = Ball::new(other.x, other.y, other.vx, other.vy, other.radius, 0);
+                if behind > 0.0 {
+                    step.integrator.fly(&mut there, &flight[j], behind);
+                }
+                let theirs = step.integrator.path(&there, &flight[j]);
+                let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis].minus_poly(&path[axis]));
+                toi::first_touch(&relative, reach, left)
+            };
+            if let Some(time) = touch {
                 queue.push(now + time, i, What::Ball(j as u32));
             }
         });
