@@ -8,6 +8,8 @@
 //! - [`integrator`], [`motion`], [`exact`], [`poly`]: turning forces into motion; substeps;
 //!   bouncing at the exact time of impact.
 //! - [`collisions`], [`grid`]: ball-ball contacts and the broad phase that finds them.
+//! - [`toi`], [`events`]: exact mode's ball-ball contacts: times of impact, and the
+//!   event-driven step that resolves every contact at its moment.
 //! - [`simulation`]: all balls advanced one frame, in the order above.
 //! - [`accuracy`]: closed forms to measure the solver against; [`work`]: counting effect work.
 

@@ -59,7 +59,8 @@ impl Motion {
     pub fn step(&self, ball: &mut Ball, effects: &Effects, forces: &Forces) {
         match self.collisions {
             CollisionMode::Exact => {
-                // A capped step is counted by `Simulation`; a lone ball just carries on.
+                // Whether the step hit the cap is not reported on this path (one ball, no
+                // ball-ball collisions); `Simulation::event_counts` reports it with them.
                 exact::step(self.integrator, ball, forces, effects);
             }
             CollisionMode::Clamp => {
