@@ -120,7 +120,7 @@ fn work_done(scene: &Scene, frames: u32) -> [u64; 6] {
 
 #[test]
 fn an_effect_the_scene_does_not_call_for_never_runs() {
-    // [gravity, drag, walls, floor checks, one-pass ball-ball passes, contact-solver steps]
+    // [gravity, drag, walls, floor checks, exact ball-ball event steps, contact-solver steps]
     // over 100 frames.
     let cases = [
         ("lesson", [100, 0, 100, 0, 0, 0]),
@@ -135,7 +135,7 @@ fn an_effect_the_scene_does_not_call_for_never_runs() {
         let done = work_done(&scene, 100);
         assert_eq!(
             done, expected,
-            "preset {name}: work done [gravity, drag, walls, floor, one-pass ball-ball, contact solver]"
+            "preset {name}: work done [gravity, drag, walls, floor, exact ball-ball, contact solver]"
         );
     }
     // The contact solver checks each ball's walls once per step; a ball that can touch
@@ -149,7 +149,8 @@ fn an_effect_the_scene_does_not_call_for_never_runs() {
         "preset pile: gravity expected 15000 to {most} times, got {}",
         pile[0]
     );
-    // In exact mode ball-ball collisions keep their one pass per step and no contact solver.
+    // In exact mode ball-ball collisions are the event-driven step, once per step, and no
+    // contact solver.
     let exact = Scene {
         motion: Motion {
             collisions: CollisionMode::Exact,

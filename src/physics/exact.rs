@@ -1,24 +1,35 @@
-//! Exact collisions with the walls: instead of clamping after the step, find the moment in the
-//! step at which the ball's flight touches a wall, bounce there, and fly on for the rest of it.
+//! Exact collisions with the walls and floors: instead of clamping after the step, find the
+//! moment in the step at which the ball's flight touches a wall, a floor's face or a floor's
+//! end point, bounce there, and fly on for the rest of it.
 //!
 //! "The flight" is the integrator's own (`Integrator::path`): for velocity Verlet and RK4 under
 //! gravity alone it is the true parabola, so every bounce is exact to rounding. The Euler
 //! methods move in a straight line between velocity kicks, so for them exact mode removes the
 //! clamp's error but keeps Euler's: the bounce happens where *their* ball meets the wall.
 //!
+//! A floor is a segment: the ball meets its face when the centre comes within `r` of the
+//! segment's line with its foot on the segment, and an end point when the centre comes within
+//! `r` of it (`super::toi`). Nothing is clamped, so a ball can never be left inside a floor,
+//! nor inside a floor where it meets a wall.
+//!
 //! Two rules make every step finish:
 //! - **Rest.** A ball dropped with damping `e < 1` bounces infinitely often before
 //!   `t∞ = √(2h/g)·(1+e)/(1−e)` (Zeno). A bounce whose rebound speed would be below
-//!   [`REST_SPEED`], on a wall gravity presses the ball into, ends in rest instead: the ball
-//!   stays touching with no normal speed, and while it rests the wall cancels gravity's push.
+//!   [`REST_SPEED`], on a wall or floor gravity presses the ball into, ends in rest instead
+//!   (elastic bounces never shrink, so `e = 1` never rests):
+//!   the ball stays touching with no normal speed, and while it rests the surface holds the
+//!   part of gravity that pushes into it (on a slope the ball slides along the rest).
 //! - **A cap.** After [`MAX_EVENTS_PER_STEP`] bounces in one step (a ball moving thousands of
-//!   box widths a frame), the rest of the step is flown and clamped as in the lesson.
-//!
-//! Floors are not handled here: in exact mode they keep the lesson's clamp-then-reflect.
+//!   box widths a frame, or wedged in a corner), the rest of the step is dropped: the ball
+//!   stays where the last bounce left it, touching and never inside. [`step`] returns whether
+//!   that happened, so callers can report it.
 
 use super::ball::Ball;
+use super::effects::Effects;
+use super::floor::{dot, sub, Floor};
 use super::integrator::{Forces, Integrator};
 use super::poly::Poly;
+use super::toi::{self, TOUCH_SPEED};
 use super::walls::Walls;
 
 /// Rebound speed below which a bounce ends in rest, px/frame.
@@ -33,8 +44,8 @@ pub const REST_SPEED: f64 = 1.7;
 pub const MAX_EVENTS_PER_STEP: u32 = 64;
 
 /// One wall of the box, seen from a ball of a given radius.
-#[derive(Clone, Copy)]
-struct Side {
+#[derive(Clone, Copy, Debug)]
+pub struct Side {
     /// 0 for the left and right walls (they stop x), 1 for the top and bottom ones.
     axis: usize,
     /// The coordinate of the centre when the ball touches the wall.
@@ -42,11 +53,12 @@ struct Side {
     /// +1 for the wall at the high end of the axis (right, bottom), −1 for the low end, so
     /// the distance to the wall is `outward · (contact − centre)`.
     outward: f64,
+    damping: f64,
 }
 
 impl Side {
     /// The four walls for `ball`, with the same contact coordinates as `Ball::bounce_off_walls`.
-    fn all(walls: &Walls, ball: &Ball) -> [Side; 4] {
+    pub fn all(walls: &Walls, ball: &Ball) -> [Side; 4] {
         let r = ball.radius;
         [
             (0, r, -1.0),
@@ -58,6 +70,7 @@ impl Side {
             axis,
             contact,
             outward,
+            damping: walls.damping,
         })
     }
 
@@ -65,15 +78,16 @@ impl Side {
         self.outward * (self.contact - position(ball)[self.axis])
     }
 
-    /// Whether gravity pushes the ball into this wall.
-    fn pressed(&self, forces: &Forces) -> bool {
-        forces
-            .gravity
-            .is_some_and(|g| g[self.axis] * self.outward > 0.0)
+    /// The wall's unit normal, pointing into the box.
+    fn normal(&self) -> [f64; 2] {
+        let mut n = [0.0; 2];
+        n[self.axis] = -self.outward;
+        n
     }
 
     /// Puts the ball exactly on the wall and bounces it, or lets it come to rest there.
-    fn bounce(&self, ball: &mut Ball, damping: f64, forces: &Forces) {
+    fn bounce(&self, ball: &mut Ball, forces: &Forces) {
+        let damping = self.damping;
         let (coordinate, velocity) = match self.axis {
             0 => (&mut ball.x, &mut ball.vx),
             _ => (&mut ball.y, &mut ball.vy),
@@ -84,12 +98,314 @@ impl Side {
             return; // already leaving (it was a rounding error inside the wall): just put back
         }
         let rebound = damping * into;
-        *velocity = if rebound < REST_SPEED && self.pressed(forces) {
+        *velocity = if rests(rebound, damping, forces, self.normal()) {
             0.0
         } else {
             -*velocity * damping
         };
     }
+}
+
+/// The rest rule: whether a bounce with rebound speed `rebound` off a surface of unit normal
+/// `n` that keeps `damping` of the speed ends in rest. Elastic bounces never shrink, so they
+/// never need it.
+pub fn rests(rebound: f64, damping: f64, forces: &Forces, n: [f64; 2]) -> bool {
+    damping < 1.0 && rebound < REST_SPEED && pressed(forces, n)
+}
+
+/// Whether gravity pushes a ball into a surface whose unit normal (pointing at the ball) is `n`.
+pub fn pressed(forces: &Forces, n: [f64; 2]) -> bool {
+    forces.gravity.is_some_and(|g| dot(g, n) < 0.0)
+}
+
+/// Something fixed a ball can touch.
+#[derive(Clone, Copy, Debug)]
+pub enum Contact {
+    Wall(Side),
+    /// A floor's face; `normal` points from the floor to the ball.
+    Face {
+        normal: [f64; 2],
+        damping: f64,
+    },
+    /// A floor's end point, bounced off like a ball of radius 0 that never moves.
+    End {
+        point: [f64; 2],
+        damping: f64,
+    },
+}
+
+impl Contact {
+    /// Bounces `ball`, which touches this contact now, or lets it come to rest there.
+    pub fn bounce(&self, ball: &mut Ball, forces: &Forces) {
+        match *self {
+            Contact::Wall(side) => side.bounce(ball, forces),
+            Contact::Face { normal, damping } => bounce_along(ball, normal, damping, forces),
+            Contact::End { point, damping } => {
+                let offset = sub([ball.x, ball.y], point);
+                let distance = offset[0].hypot(offset[1]);
+                if distance > 0.0 {
+                    let n = [offset[0] / distance, offset[1] / distance];
+                    bounce_along(ball, n, damping, forces);
+                }
+            }
+        }
+    }
+}
+
+/// Reflects the velocity's component into a surface of unit normal `n` (pointing at the ball)
+/// with `damping`, or removes it (rest) when the rebound would be slower than [`REST_SPEED`]
+/// and gravity presses the ball into the surface. The tangential component is kept.
+fn bounce_along(ball: &mut Ball, n: [f64; 2], damping: f64, forces: &Forces) {
+    let normal_speed = dot([ball.vx, ball.vy], n);
+    if normal_speed >= 0.0 {
+        return;
+    }
+    let keep = if rests(-damping * normal_speed, damping, forces, n) {
+        0.0
+    } else {
+        damping
+    };
+    let change = (1.0 + keep) * normal_speed;
+    ball.vx -= change * n[0];
+    ball.vy -= change * n[1];
+}
+
+/// The surfaces a ball rests on, as unit normals pointing at the ball (walls, floors, and in
+/// `super::events` other balls): they hold the part of gravity that presses into them.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Support {
+    normals: [[f64; 2]; Support::MAX],
+    len: usize,
+}
+
+impl Support {
+    /// More surfaces than this at once hold a ball completely anyway.
+    const MAX: usize = 8;
+
+    /// Adds a surface the ball rests on (beyond `MAX`, the ball is held completely).
+    pub fn push(&mut self, n: [f64; 2]) {
+        if self.len < Self::MAX {
+            self.normals[self.len] = n;
+        }
+        self.len += 1;
+    }
+
+    /// `forces` with gravity's push into every surface removed. On one surface gravity keeps
+    /// its tangential part (a ball rests on a slope by sliding down it); if what is left still
+    /// presses into another surface, the ball is wedged and held completely.
+    pub fn hold(&self, forces: &Forces) -> Forces {
+        let mut held = *forces;
+        if self.len == 0 {
+            return held;
+        }
+        let Some(g) = held.gravity.as_mut() else {
+            return held;
+        };
+        if self.len > Self::MAX {
+            *g = [0.0; 2];
+            return held;
+        }
+        let normals = &self.normals[..self.len];
+        for &n in normals {
+            let push = dot(*g, n);
+            if push < 0.0 {
+                g[0] -= push * n[0];
+                g[1] -= push * n[1];
+            }
+        }
+        if normals.iter().any(|&n| dot(*g, n) < -TOUCH_SPEED) {
+            *g = [0.0; 2];
+        }
+        held
+    }
+}
+
+/// One step of `forces.dt` frames with exact bounces off the walls and floors of `effects`.
+/// Returns `false` if the step hit [`MAX_EVENTS_PER_STEP`] and its rest was dropped.
+pub fn step(integrator: Integrator, ball: &mut Ball, forces: &Forces, effects: &Effects) -> bool {
+    put_back(ball, effects);
+    let bounds = Bounds::of(ball, effects);
+    let mut flight = bounds.supported(ball, forces);
+    integrator.kick_before(ball, &flight);
+    let mut left = forces.dt;
+    let mut finished = false;
+    for _ in 0..MAX_EVENTS_PER_STEP {
+        let path = integrator.path(ball, &flight);
+        match bounds.first_contact(ball, &path, left) {
+            Some((time, contact)) => {
+                integrator.fly(ball, &flight, time);
+                left -= time;
+                contact.bounce(ball, forces);
+                flight = bounds.supported(ball, forces);
+            }
+            None => {
+                integrator.fly(ball, &flight, left);
+                finished = true;
+                break;
+            }
+        }
+    }
+    integrator.kick_after(ball, &flight);
+    finished
+}
+
+/// A ball that starts a step inside a wall (spawned there) is put back first, as the lesson
+/// would, so every distance to a wall starts at zero or more.
+pub fn put_back(ball: &mut Ball, effects: &Effects) {
+    if let Some(walls) = &effects.walls {
+        ball.bounce_off_walls(walls);
+    }
+}
+
+/// The walls and floors one ball can touch during a step.
+pub struct Bounds<'a> {
+    sides: Option<[Side; 4]>,
+    floors: &'a [Floor],
+}
+
+impl<'a> Bounds<'a> {
+    /// The walls and floors of `effects` as `ball` (its radius) sees them.
+    pub fn of(ball: &Ball, effects: &'a Effects) -> Bounds<'a> {
+        Bounds {
+            sides: effects.walls.as_ref().map(|walls| Side::all(walls, ball)),
+            floors: &effects.floors,
+        }
+    }
+
+    /// The walls and floor faces `ball` rests on now: touching, not moving through them.
+    pub fn support(&self, ball: &Ball) -> Support {
+        let mut support = Support::default();
+        for side in self.sides.iter().flatten() {
+            if side.distance(ball) == 0.0 && velocity(ball)[side.axis] == 0.0 {
+                support.push(side.normal());
+            }
+        }
+        for floor in self.floors {
+            if let Some(n) = resting_on_face(floor, ball) {
+                support.push(n);
+            }
+        }
+        support
+    }
+
+    /// The forces with gravity's push removed on every surface the ball rests on. Resting can
+    /// only begin or end at a bounce, so these forces hold until the next one.
+    pub fn supported(&self, ball: &Ball, forces: &Forces) -> Forces {
+        if forces.gravity.is_none() {
+            return *forces;
+        }
+        self.support(ball).hold(forces)
+    }
+
+    /// The earliest wall, floor face or floor end the flight `path` touches within `left`
+    /// frames, and when.
+    pub fn first_contact(
+        &self,
+        ball: &Ball,
+        path: &[Poly; 2],
+        left: f64,
+    ) -> Option<(f64, Contact)> {
+        // How far the flight can carry the centre along each axis: walls and floors further
+        // away are skipped without looking for roots.
+        let reach = path.map(|p| p.reach(left));
+        let walls = self.sides.iter().flatten().filter_map(|side| {
+            if reach[side.axis] < side.distance(ball) {
+                return None;
+            }
+            let gap = path[side.axis]
+                .scale(-side.outward)
+                .plus(side.outward * side.contact);
+            gap.first_negative(left)
+                .map(|time| (time, Contact::Wall(*side)))
+        });
+        let floors = self
+            .floors
+            .iter()
+            .filter_map(|floor| floor_contact(floor, ball, path, left, reach));
+        walls.chain(floors).min_by(|a, b| a.0.total_cmp(&b.0))
+    }
+}
+
+/// Normal distances below this share of the radius count as touching a floor's face.
+const TOUCH_GAP: f64 = 1e-9;
+
+/// The signed distance of the flight's centre from the floor's line, along its normal.
+fn line_distance(floor: &Floor, path: &[Poly; 2]) -> Poly {
+    let n = floor.normal();
+    path[0]
+        .scale(n[0])
+        .plus_poly(&path[1].scale(n[1]))
+        .plus(-dot(n, floor.from))
+}
+
+/// Whether a point's foot on the floor's line falls on the segment.
+fn on_segment(floor: &Floor, point: [f64; 2]) -> bool {
+    (0.0..=1.0).contains(&floor.along(point))
+}
+
+/// The normal of the floor's face `ball` rests on, if it touches the face with no normal speed.
+fn resting_on_face(floor: &Floor, ball: &Ball) -> Option<[f64; 2]> {
+    let n = floor.normal();
+    let distance = dot(sub([ball.x, ball.y], floor.from), n);
+    let n = if distance < 0.0 { [-n[0], -n[1]] } else { n };
+    let touching = (distance.abs() - ball.radius).abs() <= TOUCH_GAP * ball.radius;
+    let still = dot(velocity(ball), n).abs() <= TOUCH_SPEED;
+    (touching && still && on_segment(floor, [ball.x, ball.y])).then_some(n)
+}
+
+/// When the flight `path` of `ball` first touches the floor's face or one of its end points
+/// within `left` frames, and which.
+fn floor_contact(
+    floor: &Floor,
+    ball: &Ball,
+    path: &[Poly; 2],
+    left: f64,
+    reach: [f64; 2],
+) -> Option<(f64, Contact)> {
+    let r = ball.radius;
+    let distance = line_distance(floor, path);
+    let now = distance.at(0.0);
+    if now.abs() - r > reach[0] + reach[1] {
+        return None; // the line, so the whole segment, is out of reach this step
+    }
+    let side = if now < 0.0 { -1.0 } else { 1.0 };
+    let gap = distance.scale(side).plus(-r);
+    let approaching = |time: f64| gap.slope(time) < -TOUCH_SPEED;
+    let at = |time: f64| [path[0].at(time), path[1].at(time)];
+    let face_time = if gap.at(0.0) >= 0.0 {
+        gap.first_negative(left)
+            .filter(|&time| approaching(time) && on_segment(floor, at(time)))
+    } else {
+        // Within `r` of the line: beside the segment (only its ends can be met), or on the face
+        // by a rounding error (bounce now if moving into it).
+        (on_segment(floor, at(0.0)) && approaching(0.0)).then_some(0.0)
+    };
+    let n = floor.normal();
+    let face = face_time.map(|time| {
+        let normal = [n[0] * side, n[1] * side];
+        (
+            time,
+            Contact::Face {
+                normal,
+                damping: floor.damping,
+            },
+        )
+    });
+    let ends = [floor.from, floor.to].map(|point| {
+        let offset = [path[0].plus(-point[0]), path[1].plus(-point[1])];
+        toi::first_touch(&offset, r, left).map(|time| {
+            (
+                time,
+                Contact::End {
+                    point,
+                    damping: floor.damping,
+                },
+            )
+        })
+    });
+    face.into_iter()
+        .chain(ends.into_iter().flatten())
+        .min_by(|a, b| a.0.total_cmp(&b.0))
 }
 
 fn position(ball: &Ball) -> [f64; 2] {
@@ -98,75 +414,4 @@ fn position(ball: &Ball) -> [f64; 2] {
 
 fn velocity(ball: &Ball) -> [f64; 2] {
     [ball.vx, ball.vy]
-}
-
-/// One step of `forces.dt` frames with exact bounces off `walls`.
-pub fn step(integrator: Integrator, ball: &mut Ball, forces: &Forces, walls: &Walls) {
-    // A ball that starts the step inside a wall (spawned there, or left there by a capped
-    // step) is put back first, so every distance below starts at zero or more.
-    ball.bounce_off_walls(walls);
-    let sides = Side::all(walls, ball);
-    // Resting can only begin or end at a bounce, so these forces hold until the next one.
-    let mut flight = supported(ball, forces, &sides);
-    integrator.kick_before(ball, &flight);
-    let mut left = forces.dt;
-    for _ in 0..MAX_EVENTS_PER_STEP {
-        let path = integrator.path(ball, &flight);
-        match first_contact(&sides, ball, &path, left) {
-            Some((time, side)) => {
-                integrator.fly(ball, &flight, time);
-                left -= time;
-                side.bounce(ball, walls.damping, forces);
-                flight = supported(ball, forces, &sides);
-            }
-            None => {
-                integrator.fly(ball, &flight, left);
-                left = 0.0;
-                break;
-            }
-        }
-    }
-    if left > 0.0 {
-        integrator.fly(ball, &flight, left);
-        ball.bounce_off_walls(walls);
-        flight = supported(ball, forces, &sides);
-    }
-    integrator.kick_after(ball, &flight);
-}
-
-/// The forces with gravity's push removed on every wall the ball rests on: touching it, not
-/// moving through it, pressed into it. The wall holds the ball up, so it stays exactly there.
-fn supported(ball: &Ball, forces: &Forces, sides: &[Side; 4]) -> Forces {
-    let mut held = *forces;
-    for side in sides {
-        let resting = side.distance(ball) == 0.0 && velocity(ball)[side.axis] == 0.0;
-        if resting && side.pressed(forces) {
-            if let Some(g) = held.gravity.as_mut() {
-                g[side.axis] = 0.0;
-            }
-        }
-    }
-    held
-}
-
-/// The earliest wall the flight `path` touches within `left` frames, and when.
-fn first_contact(
-    sides: &[Side; 4],
-    ball: &Ball,
-    path: &[Poly; 2],
-    left: f64,
-) -> Option<(f64, Side)> {
-    // How far the flight can carry the centre along each axis: walls further away are skipped
-    // without looking for roots.
-    let reach = path.map(|p| p.reach(left));
-    sides
-        .iter()
-        .filter(|side| reach[side.axis] >= side.distance(ball))
-        .filter_map(|side| {
-            let gap = path[side.axis]
-                .scale(-side.outward)
-                .plus(side.outward * side.contact);
-            gap.first_negative(left).map(|time| (time, *side))
-        })
-        .min_by(|a, b| a.0.total_cmp(&b.0))
 }

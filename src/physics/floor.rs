@@ -13,24 +13,26 @@ pub struct Floor {
     pub damping: f64,
 }
 
-fn sub(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
+/// `a − b`.
+pub fn sub(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
     [a[0] - b[0], a[1] - b[1]]
 }
 
-fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
+/// `a · b`.
+pub fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
     a[0] * b[0] + a[1] * b[1]
 }
 
 impl Floor {
     /// The unit normal (left of `from → to`); which side a ball is on is the sign along it.
-    fn normal(&self) -> [f64; 2] {
+    pub fn normal(&self) -> [f64; 2] {
         let [dx, dy] = sub(self.to, self.from);
         let length = dx.hypot(dy);
         [dy / length, -dx / length]
     }
 
     /// Where along the segment the point's projection falls: 0 at `from`, 1 at `to`.
-    fn along(&self, point: [f64; 2]) -> f64 {
+    pub fn along(&self, point: [f64; 2]) -> f64 {
         let d = sub(self.to, self.from);
         dot(sub(point, self.from), d) / dot(d, d)
     }

@@ -9,6 +9,8 @@
 //!   bouncing at the exact time of impact.
 //! - [`collisions`], [`grid`]: ball-ball contacts and the broad phase that finds them.
 //! - [`contacts`]: the iterative contact solver that piles and stacks need (clamp mode).
+//! - [`toi`], [`events`]: exact mode's ball-ball contacts: times of impact, and the
+//!   event-driven step that resolves every contact at its moment.
 //! - [`simulation`]: all balls advanced one frame, in the order above.
 //! - [`accuracy`]: closed forms to measure the solver against; [`work`]: counting effect work.
 
@@ -17,6 +19,7 @@ pub mod ball;
 pub mod collisions;
 pub mod contacts;
 pub mod effects;
+pub mod events;
 pub mod exact;
 pub mod floor;
 pub mod grid;
@@ -24,6 +27,7 @@ pub mod integrator;
 pub mod motion;
 pub mod poly;
 pub mod simulation;
+pub mod toi;
 pub mod walls;
 pub mod work;
 

@@ -14,8 +14,8 @@ pub enum CollisionMode {
     /// The lesson's: after the step, clamp the ball back to the wall and reflect its velocity.
     #[default]
     Clamp,
-    /// Bounce off the walls at the moment of impact within the step; floors are still
-    /// clamped after the step.
+    /// Bounce off walls, floors and (in a `Simulation`) other balls at the moment of impact
+    /// within the step.
     Exact,
 }
 
@@ -66,14 +66,17 @@ impl Motion {
 
     /// One step of `forces.dt` frames: integrate, then resolve walls and floors.
     pub fn step(&self, ball: &mut Ball, effects: &Effects, forces: &Forces) {
-        let from = [ball.x, ball.y];
-        match (self.collisions, &effects.walls) {
-            (CollisionMode::Exact, Some(walls)) => {
-                exact::step(self.integrator, ball, forces, walls)
+        match self.collisions {
+            CollisionMode::Exact => {
+                // Whether the step hit the cap is not reported on this path (one ball, no
+                // ball-ball collisions); `Simulation::event_counts` reports it with them.
+                exact::step(self.integrator, ball, forces, effects);
             }
-            _ => self.integrator.step(ball, forces),
+            CollisionMode::Clamp => {
+                let from = [ball.x, ball.y];
+                self.integrator.step(ball, forces);
+                effects.clamp_and_reflect(ball, from);
+            }
         }
-        // Exact mode leaves the ball inside the walls, where this only resolves floors.
-        effects.clamp_and_reflect(ball, from);
     }
 }

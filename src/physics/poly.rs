@@ -6,8 +6,9 @@
 //! derivative, so on each of those pieces it crosses zero at most once, and bisection finds
 //! that crossing to the last bit. The derivative's roots are found the same way, one degree down.
 
-/// The highest degree held: RK4's flight is a quartic.
-const MAX_DEGREE: usize = 4;
+/// The highest degree held: RK4's flight is a quartic, and a squared distance along two
+/// such flights is of degree 8.
+const MAX_DEGREE: usize = 8;
 
 /// `c[0] + c[1]·t + c[2]·t² + …`
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -61,6 +62,50 @@ impl Poly {
         self
     }
 
+    /// The coefficient of `t^i` (0 beyond the degree).
+    pub fn coefficient(&self, i: usize) -> f64 {
+        self.c.get(i).copied().unwrap_or(0.0)
+    }
+
+    /// The highest power with a non-zero coefficient.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// `self + other`.
+    pub fn plus_poly(mut self, other: &Poly) -> Poly {
+        self.c.iter_mut().zip(other.c).for_each(|(c, o)| *c += o);
+        self.trim();
+        self
+    }
+
+    /// `self − other`.
+    pub fn minus_poly(self, other: &Poly) -> Poly {
+        self.plus_poly(&other.scale(-1.0))
+    }
+
+    /// `self · other`; the degrees must add up to at most `MAX_DEGREE`.
+    pub fn mul(&self, other: &Poly) -> Poly {
+        assert!(
+            self.degree + other.degree <= MAX_DEGREE,
+            "product degree too high"
+        );
+        let mut c = [0.0; MAX_DEGREE + 1];
+        for i in 0..=self.degree {
+            for j in 0..=other.degree {
+                c[i + j] += self.c[i] * other.c[j];
+            }
+        }
+        let mut p = Poly { c, degree: 0 };
+        p.trim();
+        p
+    }
+
+    /// The derivative's value at `t`.
+    pub fn slope(&self, t: f64) -> f64 {
+        self.derivative().at(t)
+    }
+
     fn derivative(&self) -> Poly {
         let mut c = [0.0; MAX_DEGREE + 1];
         for i in 1..=self.degree {
@@ -83,6 +128,15 @@ impl Poly {
     /// The first time in `[0, end]` at which the polynomial is below zero, if any, as the last
     /// time it was still ≥ 0 (so a ball moved there is touching, not inside). Assumes `at(0) ≥ 0`.
     pub fn first_negative(&self, end: f64) -> Option<f64> {
+        self.first_crossing(end).map(|(before, _)| before)
+    }
+
+    /// The first crossing below zero in `[0, end]` as two adjacent times: the last one still
+    /// ≥ 0 and the first one below. Assumes `at(0) ≥ 0`.
+    pub fn first_crossing(&self, end: f64) -> Option<(f64, f64)> {
+        if self.degree == 1 {
+            return self.line_crossing(end);
+        }
         let mut left = 0.0;
         let derivative_roots = self.derivative().roots(0.0, end);
         for &right in derivative_roots.t[..derivative_roots.len]
@@ -95,6 +149,28 @@ impl Poly {
             left = right;
         }
         None
+    }
+
+    /// `first_crossing` for a straight line: the root by one division, checked against its
+    /// neighbours; bisection only if rounding puts it more than a few numbers off (a slope so
+    /// small that the line stays at zero for a stretch of tiny numbers).
+    fn line_crossing(&self, end: f64) -> Option<(f64, f64)> {
+        let (value, slope) = (self.c[0], self.c[1]);
+        if slope >= 0.0 || self.at(end) >= 0.0 {
+            return None;
+        }
+        let mut before = (value / -slope).clamp(0.0, end);
+        for _ in 0..4 {
+            if self.at(before) >= 0.0 {
+                break;
+            }
+            before = before.next_down().max(0.0);
+        }
+        let after = before.next_up();
+        if self.at(before) >= 0.0 && self.at(after) < 0.0 {
+            return Some((before, after));
+        }
+        Some(self.bisect(0.0, end))
     }
 
     /// Every root strictly inside `(start, end)` where the sign changes, in increasing order.
@@ -111,7 +187,7 @@ impl Poly {
         for &right in turns.t[..turns.len].iter().chain([end].iter()) {
             let (a, b) = (self.at(left), self.at(right));
             if (a < 0.0) != (b < 0.0) && a != 0.0 && b != 0.0 {
-                let root = if a > 0.0 {
+                let (root, _) = if a > 0.0 {
                     self.bisect(left, right)
                 } else {
                     self.scale(-1.0).bisect(left, right)
@@ -125,12 +201,12 @@ impl Poly {
     }
 
     /// Narrows `[left, right]` (`≥ 0` at `left`, `< 0` at `right`) down to adjacent numbers
-    /// and returns `left`, the last point not below zero.
-    fn bisect(&self, mut left: f64, mut right: f64) -> f64 {
+    /// and returns them: the last point not below zero and the first one below.
+    fn bisect(&self, mut left: f64, mut right: f64) -> (f64, f64) {
         loop {
             let mid = left + (right - left) / 2.0;
             if mid <= left || mid >= right {
-                return left;
+                return (left, right);
             }
             if self.at(mid) < 0.0 {
                 right = mid;
@@ -151,6 +227,23 @@ mod tests {
         let p = Poly::new(&[1.0, 0.0, -1.0]);
         let t = p.first_negative(2.0).expect("a root in [0, 2]");
         assert!((t - 1.0).abs() < 1e-15, "expected 1, got {t}");
+    }
+
+    #[test]
+    fn a_falling_line_crosses_between_two_adjacent_numbers() {
+        // 1 − 3t crosses at 1/3, which no f64 holds exactly.
+        let p = Poly::new(&[1.0, -3.0]);
+        let (before, after) = p.first_crossing(1.0).expect("a crossing");
+        assert!(
+            p.at(before) >= 0.0 && p.at(after) < 0.0,
+            "{before} and {after} must bracket it"
+        );
+        assert_eq!(before.next_up(), after, "adjacent numbers");
+        assert!(
+            (before - 1.0 / 3.0).abs() < 1e-15,
+            "expected 1/3, got {before}"
+        );
+        assert_eq!(p.first_crossing(0.3), None, "not yet by 0.3");
     }
 
     #[test]

@@ -1,9 +1,9 @@
 //! A scene in motion: the balls and the effects acting on them, advanced one frame at a time.
 
 use super::ball::Ball;
-use super::collisions::Collisions;
 use super::contacts::ContactSolver;
 use super::effects::Effects;
+use super::events::system::{EventCounts, EventDriven};
 use super::motion::{CollisionMode, Motion};
 
 /// The moving state of a scene.
@@ -12,11 +12,12 @@ pub struct Simulation {
     balls: Vec<Ball>,
     effects: Effects,
     motion: Motion,
-    /// Present only if the scene calls for ball-ball collisions in exact mode (it owns the grid).
-    collisions: Option<Collisions>,
     /// Present only if the scene calls for ball-ball collisions in clamp mode: then it moves
     /// the balls and solves every contact (it owns the grid).
     contacts: Option<ContactSolver>,
+    /// Present only if the scene calls for ball-ball collisions in exact mode: then every
+    /// contact is resolved at its moment (`super::events`).
+    events: Option<EventDriven>,
 }
 
 impl Simulation {
@@ -34,54 +35,47 @@ impl Simulation {
             balls,
             effects,
             motion,
-            collisions: restitution.filter(|_| !clamp).map(Collisions::new),
             contacts: restitution.filter(|_| clamp).map(ContactSolver::new),
+            events: restitution.filter(|_| !clamp).map(EventDriven::new),
         }
     }
 
     /// Advances every ball by one frame, then the trails record where the balls ended it.
-    /// With ball-ball collisions in clamp mode the contact solver moves the balls; otherwise
-    /// each step (substep) moves every ball on its own, then (exact mode) resolves ball-ball
-    /// contacts once, so more substeps also catch faster pairs. The step's forces are worked
-    /// out once per frame, for all balls.
+    /// With ball-ball collisions, clamp mode's contact solver or exact mode's event-driven
+    /// step moves the balls; without them each step (substep) moves every ball on its own.
+    /// The step's forces are worked out once per frame, for all balls.
     pub fn step(&mut self) {
+        let (steps, forces) = self.motion.plan(&self.effects);
         if let Some(contacts) = &mut self.contacts {
             contacts.step(&mut self.balls, &self.effects, &self.motion);
+        } else if let Some(events) = &mut self.events {
+            let integrator = self.motion.integrator;
+            events.frame(&mut self.balls, integrator, steps, &forces, &self.effects);
         } else {
-            self.step_each_ball();
+            for _ in 0..steps {
+                for ball in &mut self.balls {
+                    self.motion.step(ball, &self.effects, &forces);
+                }
+            }
         }
         for ball in &mut self.balls {
             ball.record_trail();
         }
     }
 
-    /// The frame of a scene without the contact solver: every ball on its own, then (exact
-    /// mode) one pass over the ball-ball contacts per step.
-    fn step_each_ball(&mut self) {
-        let (steps, forces) = self.motion.plan(&self.effects);
-        for _ in 0..steps {
-            for ball in &mut self.balls {
-                self.motion.step(ball, &self.effects, &forces);
-            }
-            if let Some(collisions) = &mut self.collisions {
-                collisions.resolve(&mut self.balls);
-                if let Some(walls) = &self.effects.walls {
-                    for ball in &mut self.balls {
-                        ball.keep_inside(walls);
-                    }
-                }
-            }
-        }
-    }
-
-    /// Whether ball-ball collisions (and so the broad-phase grid) exist in this simulation.
+    /// Whether ball-ball collisions (and so a broad-phase grid) exist in this simulation.
     pub fn has_ball_collisions(&self) -> bool {
-        self.collisions.is_some() || self.contacts.is_some()
+        self.contacts.is_some() || self.events.is_some()
     }
 
     /// Whether the contact solver exists in this simulation.
     pub fn has_contact_solver(&self) -> bool {
         self.contacts.is_some()
+    }
+
+    /// In exact mode with ball-ball collisions, what the last frame's events were.
+    pub fn event_counts(&self) -> Option<EventCounts> {
+        self.events.as_ref().map(EventDriven::counts)
     }
 
     /// The balls as they are now, in scene order.

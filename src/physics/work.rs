@@ -13,7 +13,7 @@ pub enum Work {
     Walls,
     /// One ball checked against one floor segment.
     Floor,
-    /// One ball-ball pass over the whole scene (building the broad-phase grid).
+    /// One exact-mode step of ball-ball events over the whole scene (its cells and queue).
     BallCollisions,
     /// One step of the contact solver over the whole scene (grid, walls, floors, iterations).
     Contacts,

@@ -1,0 +1,94 @@
+//! How fast exact mode resolves ball-ball collisions, and whether the cost of one stays flat
+//! as the number of balls grows (the event calendar is O(log N) per event).
+//!
+//! An elastic gas: equal balls of radius 3 covering 30 % of a box with elastic walls, no
+//! gravity, started on a jittered square lattice with random velocities and stirred for a few
+//! frames first. Criterion times one frame (`Simulation::step`) and reports, as "elements",
+//! ball-ball collisions per second (the mean over 20 frames before timing sets the count per
+//! frame; the mean and the share of other events are printed). 1,000, 10,000, 100,000 balls.
+//!
+//! Run: `cargo bench -p bouncing_ball_bench --bench exact_events` (about 40 s).
+
+use std::f64::consts::PI;
+use std::time::Duration;
+
+use bouncing_ball::physics::motion::CollisionMode;
+use bouncing_ball::scene::random::Random;
+use bouncing_ball::{BallSpec, Scene};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+
+const PACKING: f64 = 0.3;
+const RADIUS: f64 = 3.0;
+/// Starting speed along each axis is up to this, px/frame.
+const SPEED: f64 = 2.0;
+/// Frames run before measuring, so the lattice has melted into a gas.
+const STIR: u32 = 20;
+
+fn gas(count: usize) -> Scene {
+    let mut random = Random::new(count as u64);
+    let side = (count as f64 * PI * RADIUS * RADIUS / PACKING)
+        .sqrt()
+        .ceil();
+    let per_row = (count as f64).sqrt().ceil() as usize;
+    let pitch = side / per_row as f64;
+    let jitter = pitch / 2.0 - RADIUS;
+    let balls = (0..count)
+        .map(|k| BallSpec {
+            x: ((k % per_row) as f64 + 0.5) * pitch + random.range(-jitter, jitter),
+            y: ((k / per_row) as f64 + 0.5) * pitch + random.range(-jitter, jitter),
+            vx: random.range(-SPEED, SPEED),
+            vy: random.range(-SPEED, SPEED),
+            radius: RADIUS,
+            colour: [255, 255, 255],
+            trail_colour: [255, 255, 255],
+            trail: 0,
+        })
+        .collect();
+    let mut scene = Scene {
+        balls,
+        walls: Some(1.0),
+        ball_collisions: Some(1.0),
+        ..Scene::empty(side as u32, side as u32)
+    };
+    scene.motion.collisions = CollisionMode::Exact;
+    scene
+}
+
+fn exact_events(c: &mut Criterion) {
+    let mut group = c.benchmark_group("exact_ball_collisions");
+    for count in [1_000, 10_000, 100_000] {
+        let scene = gas(count);
+        scene.validate().expect("a valid benchmark scene");
+        let mut simulation = scene.simulation();
+        for _ in 0..STIR {
+            simulation.step();
+        }
+        let (mut collisions, mut events) = (0, 0);
+        for _ in 0..STIR {
+            simulation.step();
+            let counts = simulation.event_counts().expect("exact mode counts events");
+            collisions += counts.ball_collisions;
+            events += counts.events;
+        }
+        let per_frame = collisions / u64::from(STIR);
+        println!(
+            "{count} balls: {per_frame} ball-ball collisions and {} events in all per frame",
+            events / u64::from(STIR)
+        );
+        group.throughput(Throughput::Elements(per_frame));
+        group.bench_function(BenchmarkId::from_parameter(count), |bencher| {
+            bencher.iter(|| simulation.step());
+        });
+    }
+    group.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(4));
+    targets = exact_events
+}
+criterion_main!(benches);

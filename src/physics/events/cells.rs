@@ -1,0 +1,157 @@
+//! The grid of the event-driven step: which balls can touch soon, and when a ball moves into
+//! another cell.
+//!
+//! Cells are squares at least one largest diameter wide, so two touching balls are always in
+//! the same or neighbouring cells. Unlike the stepped broad phase (`super::super::grid`), balls
+//! move between cells in the middle of the step: leaving a cell is an event like any other,
+//! and each cell keeps its balls in a linked list so a move costs O(1) (Rapaport's cell lists).
+//!
+//! A ball changes cell only once it is a hair (`margin`) past the border, and the cells are
+//! widened by twice that, so rounding can neither make a ball hop back and forth across a
+//! border nor let two touching balls sit two cells apart. The outermost cells reach to
+//! infinity, so a ball that leaves the area the grid was laid over still has a cell.
+
+use super::super::ball::Ball;
+use super::super::poly::Poly;
+
+/// No more than about this many cells per ball: sparse balls get wider cells instead.
+const MAX_CELLS_PER_BALL: f64 = 4.0;
+
+/// The end of a cell's list.
+const NONE: u32 = u32::MAX;
+
+/// Balls in cells, rebuilt at the start of every step into the same buffers.
+#[derive(Clone, Debug, Default)]
+pub struct Cells {
+    left: f64,
+    top: f64,
+    size: f64,
+    margin: f64,
+    columns: usize,
+    rows: usize,
+    /// First ball of each cell's list.
+    head: Vec<u32>,
+    /// Per ball: the next and previous ball in its cell's list, and its cell's column and row.
+    next: Vec<u32>,
+    prev: Vec<u32>,
+    at: Vec<[usize; 2]>,
+}
+
+impl Cells {
+    /// Lays a grid over the balls as they are now and puts each ball in its cell.
+    pub fn rebuild(&mut self, balls: &[Ball]) {
+        let (mut left, mut top, mut right, mut bottom) = (0.0, 0.0, 0.0, 0.0);
+        let mut largest = 0.0f64;
+        if let Some(first) = balls.first() {
+            (left, top, right, bottom) = (first.x, first.y, first.x, first.y);
+        }
+        for ball in balls {
+            left = f64::min(left, ball.x);
+            top = f64::min(top, ball.y);
+            right = f64::max(right, ball.x);
+            bottom = f64::max(bottom, ball.y);
+            largest = largest.max(ball.radius);
+        }
+        let (width, height) = (right - left, bottom - top);
+        let most = MAX_CELLS_PER_BALL * balls.len().max(1) as f64;
+        self.margin = 1e-6 * 2.0 * largest;
+        self.size = (2.0 * largest + 4.0 * self.margin)
+            .max((width * height / most).sqrt())
+            .max(width.max(height) / most)
+            .max(f64::MIN_POSITIVE);
+        // `as usize` saturates and maps NaN to 0, so no position can make an index out of range.
+        self.columns = (width / self.size) as usize + 1;
+        self.rows = (height / self.size) as usize + 1;
+        (self.left, self.top) = (left, top);
+
+        self.head.clear();
+        self.head.resize(self.columns * self.rows, NONE);
+        self.next.clear();
+        self.next.resize(balls.len(), NONE);
+        self.prev.clear();
+        self.prev.resize(balls.len(), NONE);
+        self.at.clear();
+        for (i, ball) in balls.iter().enumerate() {
+            let column = (((ball.x - left) / self.size) as usize).min(self.columns - 1);
+            let row = (((ball.y - top) / self.size) as usize).min(self.rows - 1);
+            self.at.push([column, row]);
+            self.link(i);
+        }
+    }
+
+    fn cell(&self, [column, row]: [usize; 2]) -> usize {
+        row * self.columns + column
+    }
+
+    /// Puts ball `i` at the head of the list of the cell `at[i]` says.
+    fn link(&mut self, i: usize) {
+        let cell = self.cell(self.at[i]);
+        let first = self.head[cell];
+        self.next[i] = first;
+        self.prev[i] = NONE;
+        if first != NONE {
+            self.prev[first as usize] = i as u32;
+        }
+        self.head[cell] = i as u32;
+    }
+
+    fn unlink(&mut self, i: usize) {
+        let (next, prev) = (self.next[i], self.prev[i]);
+        if prev == NONE {
+            let cell = self.cell(self.at[i]);
+            self.head[cell] = next;
+        } else {
+            self.next[prev as usize] = next;
+        }
+        if next != NONE {
+            self.prev[next as usize] = prev;
+        }
+    }
+
+    /// Calls `visit` with every ball in ball `i`'s cell and the eight around it (`i` included).
+    pub fn neighbours(&self, i: usize, mut visit: impl FnMut(usize)) {
+        let [column, row] = self.at[i];
+        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
+            for c in column.saturating_sub(1)..=(column + 1).min(self.columns - 1) {
+                let mut j = self.head[r * self.columns + c];
+                while j != NONE {
+                    visit(j as usize);
+                    j = self.next[j as usize];
+                }
+            }
+        }
+    }
+
+    /// When ball `i`, whose centre moves along `path`, first leaves its cell within `left`
+    /// frames, along which axis and towards which side.
+    pub fn exit(&self, i: usize, path: &[Poly; 2], left: f64) -> Option<(f64, u8, i8)> {
+        let counts = [self.columns, self.rows];
+        let origin = [self.left, self.top];
+        let mut first: Option<(f64, u8, i8)> = None;
+        for axis in 0..2u8 {
+            let a = usize::from(axis);
+            let index = self.at[i][a];
+            let low = origin[a] + index as f64 * self.size - self.margin;
+            let high = low + self.size + 2.0 * self.margin;
+            // Distances to the far side of each border, which fall below zero on leaving.
+            let ahead = (index + 1 < counts[a]).then(|| (path[a].scale(-1.0).plus(high), 1));
+            let behind = (index > 0).then(|| (path[a].plus(-low), -1));
+            for (distance, towards) in ahead.into_iter().chain(behind) {
+                if let Some(time) = distance.first_negative(left) {
+                    if first.is_none_or(|(earliest, _, _)| time < earliest) {
+                        first = Some((time, axis, towards));
+                    }
+                }
+            }
+        }
+        first
+    }
+
+    /// Moves ball `i` into the next cell along `axis` towards `towards`.
+    pub fn shift(&mut self, i: usize, axis: u8, towards: i8) {
+        self.unlink(i);
+        let at = &mut self.at[i][usize::from(axis)];
+        *at = at.wrapping_add_signed(isize::from(towards));
+        self.link(i);
+    }
+}

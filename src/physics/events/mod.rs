@@ -1,0 +1,18 @@
+//! Exact ball-ball contacts: event-driven dynamics inside each step, the way hard-sphere
+//! molecular dynamics does it (Alder & Wainwright; Rapaport's event calendar; Lubachevsky's
+//! local clocks; Sedgewick & Wayne's `CollisionSystem` is the teaching version).
+//!
+//! Instead of moving every ball a whole step and then mending overlaps, the step is a sequence
+//! of *events* in time order: two balls touch, a ball touches a wall or floor, a ball crosses
+//! into another cell of the grid. Each event changes one or two balls, and only their future
+//! events are predicted again.
+//!
+//! - [`queue`]: the calendar of predicted events, a binary heap with a counter per ball.
+//! - [`cells`]: the uniform grid that says which balls can meet soon, and when a ball leaves
+//!   its cell.
+//! - [`system`]: one step of the whole scene, event after event; the rules that make inelastic
+//!   collapse finish; the counts it reports.
+
+pub mod cells;
+pub mod queue;
+pub mod system;

@@ -1,0 +1,416 @@
+//! One step of a scene with exact ball-ball contacts: events in time order.
+//!
+//! Every ball keeps its own clock (Lubachevsky): it is only moved when an event involves it,
+//! and its state is valid at its clock's time. An event at time `t` moves its one or two balls
+//! from their clocks to `t` along their flights, bounces them, and predicts their next events:
+//! against every ball in the neighbouring cells (`super::super::toi`), against the walls and
+//! floors (`super::super::exact`), and leaving the cell. At the end of the step every ball is
+//! flown from its clock to the step's end.
+//!
+//! Two balls bounce at the moment they touch, along the line through their centres at that
+//! moment, with masses ∝ radius² and the scene's restitution `e`: the relative normal speed
+//! `u` becomes `−e·u`.
+//!
+//! **Inelastic collapse.** With `e < 1`, balls can collide infinitely often in finite time
+//! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. Two rules,
+//! the same as for walls (`super::super::exact`), make every step finish:
+//! - **Rest rule.** At the start of each step a ball that touches, without normal speed, a
+//!   wall, a floor or a ball that is itself held, and that gravity presses onto it, is *held*:
+//!   that part of gravity is removed from its step, as the wall's rest rule does. A collision
+//!   with `e < 1` whose rebound would be slower than `exact::REST_SPEED`, of a ball that
+//!   gravity presses onto a held ball, ends with the falling ball at rest on the held one, as
+//!   on a wall (the held ball is not pushed: what holds it takes the impulse). Without this a
+//!   ball landing on a resting pile would bounce between pile and ball in ever smaller steps,
+//!   without end. A settled pile has no events at all.
+//! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
+//!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
+//!   ball's previous collision is elastic, so a cascade of collisions at one moment ends.
+//! - **A cap.** A step resolves at most [`MAX_EVENTS_PER_BALL`] events per ball. If it runs
+//!   out, every ball is flown to the time of the last event and the rest of the step is
+//!   dropped: nothing overlaps, time is lost (and the Euler methods' gravity kick for the
+//!   dropped time is taken back). [`EventCounts`] reports each such step.
+
+use super::super::ball::Ball;
+use super::super::effects::Effects;
+use super::super::exact::{self, Bounds, Contact, Support, REST_SPEED};
+use super::super::floor::dot;
+use super::super::integrator::{Forces, Integrator};
+use super::super::poly::Poly;
+use super::super::toi::{self, TOUCH_SPEED};
+use super::super::work::{tally, Work};
+use super::cells::Cells;
+use super::queue::{Queue, What};
+
+/// The most events one step may resolve, per ball.
+pub const MAX_EVENTS_PER_BALL: u64 = 64;
+
+/// The TC model's duration (Luding & McNamara), frames: a ball-ball collision within this
+/// long of either ball's previous one is elastic. Collisions that all happen at one moment
+/// (a ball pressed into a touching row) then pass the momentum along as in Newton's cradle,
+/// a finite number of events, instead of sharing it out in infinitely many smaller ones.
+pub const TC_DURATION: f64 = 1e-6;
+
+/// Gaps between balls below this share of their radii count as touching, for the rest rule.
+const TOUCH_GAP: f64 = 1e-9;
+
+/// What the event-driven steps of the last frame did.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct EventCounts {
+    /// Events resolved (ball-ball, wall and floor bounces, cell crossings).
+    pub events: u64,
+    /// Of those, bounces between two balls.
+    pub ball_collisions: u64,
+    /// The most events any single step of the frame resolved.
+    pub most_in_a_step: u64,
+    /// Steps that hit the cap and dropped the rest of their time.
+    pub capped_steps: u64,
+}
+
+/// Exact ball-ball contacts, keeping its buffers from step to step.
+#[derive(Clone, Debug)]
+pub struct EventDriven {
+    /// Share of the approach speed kept after a bounce (0 to 1).
+    restitution: f64,
+    queue: Queue,
+    cells: Cells,
+    /// Per ball: the time its state is valid at, and the forces of its flight this step.
+    clock: Vec<f64>,
+    flight: Vec<Forces>,
+    /// Per ball: the wall or floor its pending contact event is with.
+    contact: Vec<Option<Contact>>,
+    /// Per ball: the surfaces it rests on at the start of the step.
+    support: Vec<Support>,
+    /// Per ball: whether something holds it up (part of gravity removed).
+    held: Vec<bool>,
+    /// Per ball: when it last collided with another ball, frames since the first step.
+    last_collision: Vec<f64>,
+    /// Frames since the first step, at the start of this step.
+    elapsed: f64,
+    counts: EventCounts,
+}
+
+/// The settings one step needs, borrowed from the simulation.
+struct Step<'a> {
+    integrator: Integrator,
+    forces: &'a Forces,
+    effects: &'a Effects,
+}
+
+impl EventDriven {
+    /// Exact contacts that keep `restitution` of the approach speed.
+    pub fn new(restitution: f64) -> EventDriven {
+        EventDriven {
+            restitution,
+            queue: Queue::default(),
+            cells: Cells::default(),
+            clock: Vec::new(),
+            flight: Vec::new(),
+            contact: Vec::new(),
+            support: Vec::new(),
+            held: Vec::new(),
+            last_collision: Vec::new(),
+            elapsed: 0.0,
+            counts: EventCounts::default(),
+        }
+    }
+
+    /// What the steps of the last frame did.
+    pub fn counts(&self) -> EventCounts {
+        self.counts
+    }
+
+    /// Advances `balls` by one frame of `steps` steps of `forces.dt` frames.
+    pub fn frame(
+        &mut self,
+        balls: &mut [Ball],
+        integrator: Integrator,
+        steps: u32,
+        forces: &Forces,
+        effects: &Effects,
+    ) {
+        self.counts = EventCounts::default();
+        for _ in 0..steps {
+            tally(Work::BallCollisions);
+            self.step(balls, integrator, forces, effects);
+        }
+    }
+
+    /// Advances `balls` by one step of `forces.dt` frames, every contact at its moment.
+    fn step(
+        &mut self,
+        balls: &mut [Ball],
+        integrator: Integrator,
+        forces: &Forces,
+        effects: &Effects,
+    ) {
+        let step = Step {
+            integrator,
+            forces,
+            effects,
+        };
+        self.start(balls, &step);
+        let cap = MAX_EVENTS_PER_BALL * balls.len() as u64;
+        let mut events = 0;
+        let mut end = forces.dt;
+        while let Some(event) = self.queue.pop() {
+            if events == cap {
+                end = event.time; // no clock is later: events come out in time order
+                self.counts.capped_steps += 1;
+                break;
+            }
+            events += 1;
+            let (i, now) = (event.ball as usize, event.time);
+            self.fly(&mut balls[i], i, now, &step);
+            match event.what {
+                What::Ball(j) => {
+                    let j = j as usize;
+                    self.fly(&mut balls[j], j, now, &step);
+                    self.collide(balls, i, j, forces, now);
+                    self.counts.ball_collisions += 1;
+                    self.queue.changed(i);
+                    self.queue.changed(j);
+                    self.predict(balls, i, &step, false);
+                    self.predict(balls, j, &step, false);
+                }
+                What::Contact => {
+                    if let Some(contact) = self.contact[i] {
+                        contact.bounce(&mut balls[i], forces);
+                    }
+                    self.flight[i] = Bounds::of(&balls[i], effects).supported(&balls[i], forces);
+                    self.held[i] = self.flight[i] != *forces;
+                    self.queue.changed(i);
+                    self.predict(balls, i, &step, false);
+                }
+                What::Cell { axis, towards } => {
+                    self.cells.shift(i, axis, towards);
+                    self.queue.changed(i);
+                    self.predict(balls, i, &step, false);
+                }
+            }
+        }
+        let unused = forces.dt - end;
+        for (i, ball) in balls.iter_mut().enumerate() {
+            self.fly(ball, i, end, &step);
+            let flight = Forces {
+                dt: end,
+                ..self.flight[i]
+            };
+            integrator.kick_after(ball, &flight);
+            // Euler's first kick gave gravity for the whole step: take back the dropped part,
+            // so a capped step cannot speed balls up without moving them.
+            if let (Integrator::SemiImplicitEuler, Some(g)) = (integrator, flight.gravity) {
+                ball.vx -= g[0] * unused;
+                ball.vy -= g[1] * unused;
+            }
+        }
+        self.elapsed += forces.dt;
+        self.counts.events += events;
+        self.counts.most_in_a_step = self.counts.most_in_a_step.max(events);
+    }
+
+    /// The start of a step: balls put back inside the walls, the grid laid, what each ball
+    /// rests on found, Euler's first kick, every ball's first events predicted.
+    fn start(&mut self, balls: &mut [Ball], step: &Step) {
+        for ball in balls.iter_mut() {
+            exact::put_back(ball, step.effects);
+        }
+        self.cells.rebuild(balls);
+        self.queue.reset(balls.len());
+        self.clock.clear();
+        self.clock.resize(balls.len(), 0.0);
+        self.contact.clear();
+        self.contact.resize(balls.len(), None);
+        self.support.clear();
+        self.support.extend(
+            balls
+                .iter()
+                .map(|ball| Bounds::of(ball, step.effects).support(ball)),
+        );
+        self.held.clear();
+        self.held.resize(balls.len(), false);
+        self.last_collision.resize(balls.len(), f64::NEG_INFINITY);
+        if step.forces.gravity.is_some() {
+            self.find_held(balls, step.forces);
+        }
+        self.flight.clear();
+        for (i, ball) in balls.iter_mut().enumerate() {
+            self.flight.push(self.support[i].hold(step.forces));
+            step.integrator.kick_before(ball, &self.flight[i]);
+        }
+        for i in 0..balls.len() {
+            self.predict(balls, i, step, true);
+        }
+    }
+
+    /// Adds to each ball's support the balls it rests on, from the bottom of a pile up: a
+    /// ball rests on a neighbour that is itself held, touches it, has no normal speed
+    /// relative to it, and is pressed onto it by gravity.
+    fn find_held(&mut self, balls: &[Ball], forces: &Forces) {
+        let held = |support: &Support| support.hold(forces) != *forces;
+        let is_held = &mut self.held;
+        let mut changed = true;
+        while changed {
+            changed = false;
+            for i in 0..balls.len() {
+                if is_held[i] {
+                    continue;
+                }
+                let mut support = self.support[i];
+                self.cells.neighbours(i, |j| {
+                    if j != i && is_held[j] {
+                        if let Some(n) = resting_on(&balls[i], &balls[j], forces) {
+                            support.push(n);
+                        }
+                    }
+                });
+                if held(&support) {
+                    self.support[i] = support;
+                    is_held[i] = true;
+                    changed = true;
+                }
+            }
+        }
+    }
+
+    /// Moves ball `i` along its flight from its clock to `time`.
+    fn fly(&mut self, ball: &mut Ball, i: usize, time: f64, step: &Step) {
+        let span = time - self.clock[i];
+        if span > 0.0 {
+            step.integrator.fly(ball, &self.flight[i], span);
+            self.clock[i] = time;
+        }
+    }
+
+    /// Predicts the next events of ball `i` (whose clock is now): contacts with walls and
+    /// floors, leaving its cell, and touching each ball in the neighbouring cells (at the
+    /// start of the step only those after it, so each pair is predicted once).
+    fn predict(&mut self, balls: &[Ball], i: usize, step: &Step, starting: bool) {
+        let now = self.clock[i];
+        let left = step.forces.dt - now;
+        let ball = &balls[i];
+        let path = step.integrator.path(ball, &self.flight[i]);
+        let bounds = Bounds::of(ball, step.effects);
+        self.contact[i] = bounds
+            .first_contact(ball, &path, left)
+            .map(|(time, contact)| {
+                self.queue.push(now + time, i, What::Contact);
+                contact
+            });
+        if let Some((time, axis, towards)) = self.cells.exit(i, &path, left) {
+            self.queue.push(now + time, i, What::Cell { axis, towards });
+        }
+        let (queue, cells) = (&mut self.queue, &self.cells);
+        let (clock, flight) = (&self.clock, &self.flight);
+        // Straight flights (the Euler methods, or nothing to curve them) need no polynomials.
+        let straight = |forces: &Forces| {
+            matches!(
+                step.integrator,
+                Integrator::ExplicitEuler | Integrator::SemiImplicitEuler
+            ) || (forces.gravity.is_none() && forces.drag.is_none())
+        };
+        let mine_straight = straight(&flight[i]);
+        cells.neighbours(i, |j| {
+            if j == i || (starting && j < i) {
+                return;
+            }
+            let other = &balls[j];
+            let reach = ball.radius + other.radius;
+            let behind = now - clock[j];
+            let touch = if mine_straight && straight(&flight[j]) {
+                let offset = [
+                    other.x + other.vx * behind - ball.x,
+                    other.y + other.vy * behind - ball.y,
+                ];
+                let velocity = [other.vx - ball.vx, other.vy - ball.vy];
+                toi::straight(offset, velocity, reach, left)
+            } else {
+                // The other ball as it will be now, so both flights start at the same moment.
+                let mut there = Ball::new(other.x, other.y, other.vx, other.vy, other.radius, 0);
+                if behind > 0.0 {
+                    step.integrator.fly(&mut there, &flight[j], behind);
+                }
+                let theirs = step.integrator.path(&there, &flight[j]);
+                let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis].minus_poly(&path[axis]));
+                toi::first_touch(&relative, reach, left)
+            };
+            if let Some(time) = touch {
+                queue.push(now + time, i, What::Ball(j as u32));
+            }
+        });
+    }
+
+    /// Bounces balls `i` and `j`, which touch now, along the line through their centres.
+    ///
+    /// Both get the same impulse in opposite directions, so momentum is kept; the relative
+    /// normal speed `u < 0` becomes `−e·u`, so with `e ≤ 1` kinetic energy never rises.
+    ///
+    /// The rest rule: with `e < 1`, a ball that gravity presses onto a held ball, and whose
+    /// rebound would be slower than `REST_SPEED`, comes to rest on it as on a wall: it loses
+    /// its normal speed relative to the held ball, which is part of what holds it and is not
+    /// pushed (the floor below takes the impulse, as a wall does).
+    fn collide(&mut self, balls: &mut [Ball], i: usize, j: usize, forces: &Forces, now: f64) {
+        let (a, b) = (&balls[i], &balls[j]);
+        let offset = [b.x - a.x, b.y - a.y];
+        let distance = offset[0].hypot(offset[1]);
+        if distance == 0.0 {
+            return;
+        }
+        let n = [offset[0] / distance, offset[1] / distance];
+        let approach = dot([b.vx - a.vx, b.vy - a.vy], n);
+        if approach >= 0.0 {
+            return;
+        }
+        let time = self.elapsed + now;
+        let recent = [i, j].map(|k| time - self.last_collision[k] < TC_DURATION);
+        self.last_collision[i] = time;
+        self.last_collision[j] = time;
+        let e = if recent[0] || recent[1] {
+            1.0
+        } else {
+            self.restitution
+        };
+        if e < 1.0 && -e * approach < REST_SPEED {
+            let resting = if self.held[i] && exact::pressed(forces, n) {
+                Some((i, j, n))
+            } else if self.held[j] && exact::pressed(forces, [-n[0], -n[1]]) {
+                Some((j, i, [-n[0], -n[1]]))
+            } else {
+                None
+            };
+            if let Some((holder, ball, n)) = resting {
+                let (vx, vy) = (balls[holder].vx, balls[holder].vy);
+                let ball = &mut balls[ball];
+                let into = dot([ball.vx - vx, ball.vy - vy], n);
+                ball.vx -= into * n[0];
+                ball.vy -= into * n[1];
+                self.held[i] = true;
+                self.held[j] = true;
+                return;
+            }
+        }
+        let (mass_a, mass_b) = (a.radius * a.radius, b.radius * b.radius);
+        let total = mass_a + mass_b;
+        let change = (1.0 + e) * approach;
+        let (kick_a, kick_b) = (change * mass_b / total, change * mass_a / total);
+        let a = &mut balls[i];
+        a.vx += kick_a * n[0];
+        a.vy += kick_a * n[1];
+        let b = &mut balls[j];
+        b.vx -= kick_b * n[0];
+        b.vy -= kick_b * n[1];
+    }
+}
+
+/// The normal (from `below` to `ball`) of the contact `ball` rests on `below` through, if it
+/// touches it with no normal speed between them and gravity presses it on.
+fn resting_on(ball: &Ball, below: &Ball, forces: &Forces) -> Option<[f64; 2]> {
+    let offset = [ball.x - below.x, ball.y - below.y];
+    let distance = offset[0].hypot(offset[1]);
+    let reach = ball.radius + below.radius;
+    if distance == 0.0 || distance - reach > TOUCH_GAP * reach {
+        return None;
+    }
+    let n = [offset[0] / distance, offset[1] / distance];
+    let still = dot([ball.vx - below.vx, ball.vy - below.vy], n).abs() <= TOUCH_SPEED;
+    (still && exact::pressed(forces, n)).then_some(n)
+}

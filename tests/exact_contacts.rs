@@ -1,0 +1,312 @@
+//! Exact mode for every contact: balls meet at the moment they touch (event-driven), floors
+//! are met at the moment of impact, nothing is clamped afterwards.
+
+use bouncing_ball::physics::ball::Ball;
+use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
+use bouncing_ball::physics::effects::Effects;
+use bouncing_ball::physics::events::system::MAX_EVENTS_PER_BALL;
+use bouncing_ball::physics::floor::Floor;
+use bouncing_ball::physics::integrator::Integrator;
+use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::walls::Walls;
+use bouncing_ball::physics::Simulation;
+use bouncing_ball::scene::file as scene_file;
+use bouncing_ball::scene::random::Random;
+
+fn exact(integrator: Integrator) -> Motion {
+    Motion {
+        integrator,
+        collisions: CollisionMode::Exact,
+        ..Motion::default()
+    }
+}
+
+fn ball(x: f64, y: f64, vx: f64, vy: f64, radius: f64) -> Ball {
+    Ball::new(x, y, vx, vy, radius, 0)
+}
+
+fn relative_error(expected: f64, actual: f64, scale: f64) -> f64 {
+    (expected - actual).abs() / scale
+}
+
+/// The closed form of an oblique collision: `b` moves at `(v, 0)` towards `a` at rest, offset
+/// `aim` px sideways. First contact is when `|Δ + Δv·t| = ra + rb`; the bounce is along the
+/// normal at that moment, masses ∝ r², restitution `e`. Returns the outgoing velocities.
+fn oblique_closed_form(a: &Ball, b: &Ball, e: f64) -> ([f64; 2], [f64; 2]) {
+    let reach = a.radius + b.radius;
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let (vx, vy) = (b.vx - a.vx, b.vy - a.vy);
+    // (vx² + vy²)t² + 2(dx·vx + dy·vy)t + dx² + dy² − reach² = 0, smaller root.
+    let (qa, qb, qc) = (
+        vx * vx + vy * vy,
+        2.0 * (dx * vx + dy * vy),
+        dx * dx + dy * dy - reach * reach,
+    );
+    let t = (-qb - (qb * qb - 4.0 * qa * qc).sqrt()) / (2.0 * qa);
+    let (nx, ny) = ((dx + vx * t) / reach, (dy + vy * t) / reach);
+    let approach = vx * nx + vy * ny;
+    let (ma, mb) = (a.radius * a.radius, b.radius * b.radius);
+    let j = (1.0 + e) * approach / (ma + mb);
+    (
+        [a.vx + j * mb * nx, a.vy + j * mb * ny],
+        [b.vx - j * ma * nx, b.vy - j * ma * ny],
+    )
+}
+
+#[test]
+fn oblique_collisions_leave_along_the_normal_at_first_contact() {
+    for speed in [5.0, 15.0] {
+        for e in [1.0, 0.7] {
+            let a = ball(100.0, 100.0, 0.0, 0.0, 6.0);
+            // 7 px off-centre, touching after 0.6 of the frame.
+            let along = (10.0f64 * 10.0 - 7.0 * 7.0).sqrt();
+            let b = ball(100.0 - along - 0.6 * speed, 107.0, speed, 0.0, 4.0);
+            let (want_a, want_b) = oblique_closed_form(&a, &b, e);
+            let mut simulation = Simulation::new(
+                vec![a, b],
+                Effects::default(),
+                exact(Integrator::SemiImplicitEuler),
+                Some(e),
+            );
+            simulation.step();
+            let got = simulation.balls();
+            for (want, got, name) in [(want_a, &got[0], "a"), (want_b, &got[1], "b")] {
+                for (w, g) in want.iter().zip([got.vx, got.vy]) {
+                    let error = relative_error(*w, g, speed);
+                    assert!(
+                        error < 1e-9,
+                        "speed {speed}, e {e}, ball {name}: expected velocity {want:?}, \
+                         got ({}, {}) (error {error:e} of the speed)",
+                        got.vx,
+                        got.vy
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_head_on_pair_closing_at_100_diameters_per_frame_bounces_back() {
+    // Radius 5: 100 diameters a frame is 1000 px/frame of closing speed.
+    let pair = vec![
+        ball(1000.0, 100.0, 500.0, 0.0, 5.0),
+        ball(1100.0, 100.0, -500.0, 0.0, 5.0),
+    ];
+    let mut simulation = Simulation::new(
+        pair,
+        Effects::default(),
+        exact(Integrator::SemiImplicitEuler),
+        Some(1.0),
+    );
+    simulation.step();
+    let [a, b] = simulation.balls() else {
+        unreachable!()
+    };
+    assert!(
+        a.vx == -500.0 && b.vx == 500.0,
+        "expected velocities −500 and 500, got {} and {}",
+        a.vx,
+        b.vx
+    );
+    // They touched at t = 0.09 (x 1045 and 1055), then flew apart for 0.91 frames.
+    let want = (1045.0 - 455.0, 1055.0 + 455.0);
+    assert!(
+        (a.x - want.0).abs() < 1e-9 && (b.x - want.1).abs() < 1e-9,
+        "expected x {want:?}, got ({}, {})",
+        a.x,
+        b.x
+    );
+}
+
+#[test]
+fn newtons_cradle_sends_exactly_one_ball_out_at_the_incoming_speed() {
+    // Five equal balls touching in a row, a sixth arriving along the line at 5 px/frame.
+    let mut balls: Vec<Ball> = (0..5)
+        .map(|k| ball(100.0 + 20.0 * f64::from(k), 100.0, 0.0, 0.0, 10.0))
+        .collect();
+    balls.push(ball(43.0, 100.0, 5.0, 0.0, 10.0));
+    let mut simulation = Simulation::new(
+        balls,
+        Effects::default(),
+        exact(Integrator::SemiImplicitEuler),
+        Some(1.0),
+    );
+    for _ in 0..20 {
+        simulation.step();
+    }
+    let balls = simulation.balls();
+    for (k, b) in balls.iter().enumerate() {
+        let want = if k == 4 { 5.0 } else { 0.0 };
+        assert!(
+            (b.vx - want).abs() < 1e-9 * 5.0 && b.vy.abs() < 1e-9 * 5.0,
+            "ball {k}: expected velocity ({want}, 0), got ({}, {})",
+            b.vx,
+            b.vy
+        );
+    }
+    let counts = simulation.event_counts().expect("exact mode counts events");
+    assert!(
+        counts.capped_steps == 0,
+        "no step may hit the cap: {counts:?}"
+    );
+}
+
+#[test]
+fn elastic_billiards_keeps_its_energy_and_never_overlaps_in_exact_mode() {
+    let mut scene = scene_file::preset("billiards", 1).expect("the billiards preset");
+    scene.motion.collisions = CollisionMode::Exact;
+    let mut simulation = scene.simulation();
+    let start = kinetic_energy(simulation.balls());
+    let radius = simulation.balls()[0].radius;
+    // The preset spawns balls at random, some overlapping; exact mode lets such pairs part
+    // on their own, and from then on no pair may overlap.
+    let mut spawn_overlap_gone = false;
+    for frame in 0..2000 {
+        simulation.step();
+        let energy = kinetic_energy(simulation.balls());
+        let drift = (energy / start - 1.0).abs();
+        assert!(
+            drift < 1e-12,
+            "frame {frame}: kinetic energy expected {start}, got {energy} (drift {drift:e})"
+        );
+        let overlap = deepest_overlap(simulation.balls()) / radius;
+        spawn_overlap_gone |= overlap < 1e-9;
+        assert!(
+            !spawn_overlap_gone || overlap < 1e-9,
+            "frame {frame}: expected no overlap deeper than 1e-9 r, got {overlap:e} r"
+        );
+        assert!(
+            frame < 100 || spawn_overlap_gone,
+            "spawn overlaps still there at frame 100"
+        );
+    }
+}
+
+/// Kinetic plus potential energy per unit mass (y grows downwards, so height is −y).
+fn energy(ball: &Ball, gravity: f64) -> f64 {
+    0.5 * (ball.vx * ball.vx + ball.vy * ball.vy) - gravity * ball.y
+}
+
+fn elastic_box_with(floors: Vec<Floor>) -> Effects {
+    Effects {
+        gravity: Some([0.0, 0.5]),
+        walls: Some(Walls {
+            width: 320.0,
+            height: 240.0,
+            damping: 1.0,
+        }),
+        floors,
+        ..Effects::default()
+    }
+}
+
+#[test]
+fn an_elastic_ball_on_a_flat_floor_or_in_a_valley_keeps_its_energy_exactly() {
+    let flat = vec![Floor {
+        from: [40.0, 200.0],
+        to: [280.0, 200.0],
+        damping: 1.0,
+    }];
+    let valley = vec![
+        Floor {
+            from: [0.0, 100.0],
+            to: [160.0, 220.0],
+            damping: 1.0,
+        },
+        Floor {
+            from: [160.0, 220.0],
+            to: [320.0, 100.0],
+            damping: 1.0,
+        },
+    ];
+    for (name, floors) in [("flat floor", flat), ("V valley", valley)] {
+        let effects = elastic_box_with(floors);
+        for integrator in [Integrator::VelocityVerlet, Integrator::Rk4] {
+            let motion = exact(integrator);
+            let mut b = ball(100.0, 40.0, 1.3, 0.0, 10.0);
+            let start = energy(&b, 0.5);
+            let mut worst = 0.0f64;
+            for _ in 0..10_000 {
+                motion.advance(&mut b, &effects);
+                worst = worst.max((energy(&b, 0.5) - start).abs() / start.abs());
+            }
+            assert!(
+                worst < 1e-9,
+                "{name}, {integrator:?}: energy expected {start} throughout, drifted by {worst:e}"
+            );
+        }
+    }
+}
+
+/// `count` balls of `radius` on a jittered lattice in the upper part of the box, moving at
+/// up to `speed` px/frame each way.
+fn lattice(count: usize, radius: f64, width: f64, speed: f64, seed: u64) -> Vec<Ball> {
+    let mut random = Random::new(seed);
+    let spacing = 2.0 * radius + 2.0;
+    let per_row = ((width - 2.0 * radius) / spacing) as usize;
+    (0..count)
+        .map(|k| {
+            let (column, row) = ((k % per_row) as f64, (k / per_row) as f64);
+            ball(
+                radius + 1.0 + column * spacing + random.range(0.0, 1.0),
+                radius + 1.0 + row * spacing + random.range(0.0, 1.0),
+                random.range(-speed, speed),
+                random.range(-speed, speed),
+                radius,
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn the_150_ball_pile_settles_without_overlap_and_every_frame_finishes() {
+    let effects = Effects {
+        gravity: Some([0.0, 0.5]),
+        walls: Some(Walls {
+            width: 320.0,
+            height: 240.0,
+            damping: 0.5,
+        }),
+        ..Effects::default()
+    };
+    let balls = lattice(150, 6.0, 320.0, 2.0, 7);
+    let start = kinetic_energy(&balls);
+    let mut simulation = Simulation::new(
+        balls,
+        effects,
+        exact(Integrator::SemiImplicitEuler),
+        Some(0.5),
+    );
+    let cap = MAX_EVENTS_PER_BALL * 150;
+    let (mut deepest, mut most, mut capped, mut late_energy) = (0.0f64, 0, 0, 0.0f64);
+    for frame in 0..400 {
+        simulation.step();
+        let counts = simulation.event_counts().expect("exact mode counts events");
+        assert!(
+            counts.events <= cap,
+            "frame {frame}: {counts:?} beyond the cap {cap}"
+        );
+        most = most.max(counts.events);
+        capped += counts.capped_steps;
+        deepest = deepest.max(deepest_overlap(simulation.balls()) / 6.0);
+        if frame >= 300 {
+            late_energy = late_energy.max(kinetic_energy(simulation.balls()));
+        }
+    }
+    println!(
+        "most events in a frame {most} (cap {cap}), capped steps {capped}, deepest overlap \
+         {deepest:e} r, kinetic energy at start {start:.1}, most in frames 300-399 {late_energy:.1}"
+    );
+    assert!(
+        deepest < 1e-6,
+        "expected no overlap deeper than 1e-6 r, got {deepest:e} r"
+    );
+    // Not at rest (see docs/exact.md): the pile keeps jiggling at a fraction of a px/frame.
+    // Falling 200 px would give each ball 100 units of energy per unit mass; the pile keeps
+    // far less than its start.
+    assert!(
+        late_energy < start / 5.0,
+        "expected the pile to settle below a fifth of the start energy {start}, got {late_energy}"
+    );
+}
