@@ -12,12 +12,12 @@
 
 use std::time::Instant;
 
+use bouncing_ball::physics::accuracy::lesson_effects;
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
-use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Simulation;
 
 const AIM: f64 = 7.0;
@@ -52,16 +52,11 @@ fn scattering(speed: f64, motion: Motion) -> (f64, f64) {
     (error, angle)
 }
 
+/// The lesson's box and gravity, elastic, with `floors` in it.
 fn floors_effects(floors: Vec<Floor>) -> Effects {
     Effects {
-        gravity: Some([0.0, 0.5]),
-        walls: Some(Walls {
-            width: 320.0,
-            height: 240.0,
-            damping: 1.0,
-        }),
         floors,
-        ..Effects::default()
+        ..lesson_effects(1.0)
     }
 }
 

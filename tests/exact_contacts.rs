@@ -1,6 +1,7 @@
 //! Exact mode for every contact: balls meet at the moment they touch (event-driven), floors
 //! are met at the moment of impact, nothing is clamped afterwards.
 
+use bouncing_ball::physics::accuracy::lesson_effects;
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
 use bouncing_ball::physics::effects::Effects;
@@ -188,16 +189,11 @@ fn energy(ball: &Ball, gravity: f64) -> f64 {
     0.5 * (ball.vx * ball.vx + ball.vy * ball.vy) - gravity * ball.y
 }
 
+/// The lesson's box and gravity, elastic, with `floors` in it.
 fn elastic_box_with(floors: Vec<Floor>) -> Effects {
     Effects {
-        gravity: Some([0.0, 0.5]),
-        walls: Some(Walls {
-            width: 320.0,
-            height: 240.0,
-            damping: 1.0,
-        }),
         floors,
-        ..Effects::default()
+        ..lesson_effects(1.0)
     }
 }
 
