@@ -45,16 +45,19 @@ impl Simulation {
     /// step moves the balls; without them each step (substep) moves every ball on its own.
     /// The step's forces are worked out once per frame, for all balls.
     pub fn step(&mut self) {
-        let (steps, forces) = self.motion.plan(&self.effects);
         if let Some(contacts) = &mut self.contacts {
+            // The solver plans its own steps.
             contacts.step(&mut self.balls, &self.effects, &self.motion);
-        } else if let Some(events) = &mut self.events {
-            let integrator = self.motion.integrator;
-            events.frame(&mut self.balls, integrator, steps, &forces, &self.effects);
         } else {
-            for _ in 0..steps {
-                for ball in &mut self.balls {
-                    self.motion.step(ball, &self.effects, &forces);
+            let (steps, forces) = self.motion.plan(&self.effects);
+            if let Some(events) = &mut self.events {
+                let integrator = self.motion.integrator;
+                events.frame(&mut self.balls, integrator, steps, &forces, &self.effects);
+            } else {
+                for _ in 0..steps {
+                    for ball in &mut self.balls {
+                        self.motion.step(ball, &self.effects, &forces);
+                    }
                 }
             }
         }
