@@ -5,7 +5,6 @@ mod common;
 
 use std::path::Path;
 
-use bouncing_ball::gif::cheapest::SMALL_DICTIONARY;
 use bouncing_ball::gif::delta::{changed_rect, Rect};
 use bouncing_ball::gif::encoder::{queue_frames, GifWriter, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
 use bouncing_ball::gif::interlace::interlace;
@@ -32,13 +31,9 @@ fn assert_lossless(scene: &Scene) {
     let dir = tempfile::tempdir().unwrap();
     let gif = decode_gif(&write_gif(scene, dir.path()));
     let rendered = render_frames(scene);
-    assert_eq!(gif.frames.len(), rendered.len(), "frame count");
-    let expected_delay = (scene.frame_ms / 10) as u16;
-    assert!(
-        gif.delays_cs.iter().all(|&d| d == expected_delay),
-        "every delay should be {expected_delay} cs"
-    );
-    for (n, (decoded, drawn)) in gif.frames.iter().zip(&rendered).enumerate() {
+    let shown = gif.timeline((scene.frame_ms / 10) as u16);
+    assert_eq!(shown.len(), rendered.len(), "frames shown over time");
+    for (n, (decoded, drawn)) in shown.iter().zip(&rendered).enumerate() {
         let differing = decoded.pixels().zip(drawn.pixels()).filter(|(a, b)| a != b);
         assert_eq!(
             differing.count(),
@@ -134,12 +129,24 @@ fn every_decoded_frame_equals_the_rendered_frame_when_frames_repeat() {
 }
 
 #[test]
-fn a_repeated_frame_is_stored_as_one_pixel_and_a_changed_one_as_its_changed_rectangle() {
+fn a_repeated_frame_is_not_stored_and_the_frame_before_shows_that_much_longer() {
     let scene = ball_that_stops();
     let dir = tempfile::tempdir().unwrap();
-    let rects = stored_rects(&write_gif(&scene, dir.path()));
+    let path = write_gif(&scene, dir.path());
+    let (rects, delays) = (stored_rects(&path), decode_gif(&path).delays_cs);
     let rendered = render_frames(&scene);
-    assert_eq!(rects.len(), rendered.len(), "frame count");
+    let frame_cs = (scene.frame_ms / 10) as u16;
+    // Each stored frame starts a run of identical rendered frames, and shows for all of them.
+    let mut runs = Vec::new();
+    for n in 0..rendered.len() {
+        if n == 0 || rendered[n] != rendered[n - 1] {
+            runs.push(1);
+        } else {
+            *runs.last_mut().unwrap() += 1;
+        }
+    }
+    let expected: Vec<u16> = runs.iter().map(|&run| run * frame_cs).collect();
+    assert_eq!(delays, expected, "each stored frame's delay, cs");
     let whole = Rect {
         left: 0,
         top: 0,
@@ -147,16 +154,11 @@ fn a_repeated_frame_is_stored_as_one_pixel_and_a_changed_one_as_its_changed_rect
         height: 60,
     };
     assert_eq!(rects[0], whole, "the first frame is whole");
-    for n in 1..rendered.len() {
-        if rendered[n] == rendered[n - 1] {
-            assert_eq!(rects[n], Rect::corner(), "frame {n} repeats the one before");
-        } else {
-            assert!(
-                rects[n].width < 80 && rects[n].height < 60,
-                "frame {n} should be only the part that changed: {:?}",
-                rects[n]
-            );
-        }
+    for (n, rect) in rects.iter().enumerate().skip(1) {
+        assert!(
+            rect.width < 80 && rect.height < 60,
+            "stored frame {n} should be only the part that changed: {rect:?}"
+        );
     }
 }
 
@@ -322,7 +324,7 @@ fn lzw_with_a_small_dictionary_decodes_to_the_same_indices_for_every_code_size()
     for colours in [2, 3, 5, 16, 129, 256] {
         let frame = random_frame(200, 150, colours, &mut random);
         let code_size = min_code_size(colours);
-        let small = SMALL_DICTIONARY;
+        let small = Choices::SMALL;
         let most = lzw.compress(code_size, frame.as_raw(), small, usize::MAX, &mut data);
         assert_eq!(
             most,
@@ -334,6 +336,41 @@ fn lzw_with_a_small_dictionary_decodes_to_the_same_indices_for_every_code_size()
             decoded == *frame.as_raw(),
             "{colours} colours: decoded indices differ"
         );
+    }
+}
+
+#[test]
+fn a_small_dictionary_started_from_the_fork_writes_the_same_bytes_as_from_the_start() {
+    let mut random = Random::new(12);
+    let (mut lzw, mut first, mut resumed, mut whole) =
+        (Lzw::new(), Vec::new(), Vec::new(), Vec::new());
+    for colours in [2, 5, 16, 129] {
+        for (width, height) in [(40, 30), (200, 150)] {
+            let frame = random_frame(width, height, colours, &mut random);
+            let size = min_code_size(colours);
+            let pixels = frame.as_raw();
+            let expected = lzw.compress(size, pixels, Choices::SMALL, usize::MAX, &mut whole);
+            lzw.compress(size, pixels, Choices::GREEDY, usize::MAX, &mut first);
+            let Some(fork) = lzw.fork() else {
+                assert!(
+                    expected.is_some_and(|codes| codes <= Choices::SMALL.max_codes),
+                    "{colours} colours, {width}x{height}: no fork, so the dictionary stayed small"
+                );
+                continue;
+            };
+            let codes =
+                lzw.compress_small_from(fork, size, pixels, &first, usize::MAX, &mut resumed);
+            assert_eq!(
+                codes, expected,
+                "{colours} colours, {width}x{height}: codes held"
+            );
+            assert!(
+                resumed == whole,
+                "{colours} colours, {width}x{height}: {} B from the fork, {} B from the start",
+                resumed.len(),
+                whole.len()
+            );
+        }
     }
 }
 

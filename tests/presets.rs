@@ -48,8 +48,9 @@ fn every_frame_of_every_committed_preset_gif_shows_what_the_renderer_drew() {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.gif"));
         let decoded = decode_gif(&path);
         let rendered = render_frames(&scene);
-        assert_eq!(decoded.frames.len(), rendered.len(), "{name}: frame count");
-        for (n, (shown, drawn)) in decoded.frames.iter().zip(&rendered).enumerate() {
+        let timeline = decoded.timeline((scene.frame_ms / 10) as u16);
+        assert_eq!(timeline.len(), rendered.len(), "{name}: frames over time");
+        for (n, (shown, drawn)) in timeline.iter().zip(&rendered).enumerate() {
             let wrong = shown.pixels().zip(drawn.pixels()).filter(|(a, b)| a != b);
             assert_eq!(wrong.count(), 0, "{name}, frame {n}: pixels differ");
         }

@@ -5,22 +5,20 @@
 //! First the layouts, each with the plain LZW coder:
 //! - the changed rectangle as it is, or with its mixed stretches of unchanged pixels
 //!   transparent ([`super::transparency`]), when an index is free to mean that and the
-//!   marking leaves fewer runs of one index (else it cannot lengthen runs, and is skipped);
+//!   marking leaves at least [`MIN_RUNS_SAVED`] fewer runs of one index (else it is skipped);
 //! - each in normal or interlaced row order ([`super::interlace`]).
 //!
-//! Then the winning layout once more with a [`SMALL_DICTIONARY`], when its first coding used
-//! more codes than that (else the two are the same). Every candidate uses the smallest code
-//! size its indices allow, and gives up as soon as it is no smaller than the best so far.
+//! Then the winning layout once more with a small dictionary ([`Choices::SMALL`]), when its
+//! first coding used more codes than that (else the two are the same); that coding starts
+//! where the first one's dictionary reached the small size, since up to there the two write
+//! the same bytes. Every candidate uses the smallest code size its indices allow, and gives
+//! up as soon as it is no smaller than the best so far.
 
 use std::mem::swap;
 
 use super::interlace::interlace;
-use super::lzw::{min_code_size, Choices, Lzw};
+use super::lzw::{min_code_size, Choices, Fork, Lzw};
 use super::transparency::{mark_mixed_stretches, transparent_index};
-
-/// The smaller dictionary tried on the winning layout (measured in docs/gif.md): cleared
-/// every 512 codes, its codes stay at most 9 bits, which suits frames with few strings.
-pub const SMALL_DICTIONARY: Choices = Choices { max_codes: 512 };
 
 /// How a frame was encoded, for its header.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -64,7 +62,7 @@ impl Coder {
         let mut chosen = Encoding::default();
         let mut code_size = 0;
         let mut budget = usize::MAX;
-        let mut winner_codes = 0;
+        let mut winner_fork: Option<Fork> = None;
         for marked in std::iter::once(None).chain(transparent.map(Some)) {
             let largest_index = match marked {
                 None => {
@@ -75,7 +73,7 @@ impl Coder {
                 Some((under, index)) => {
                     // Nothing marked is the layout already tried.
                     if mark_mixed_stretches(current, under, index, &mut self.layout) == 0
-                        || runs(&self.layout) >= runs(current)
+                        || !saves_runs(runs(current), runs(&self.layout))
                     {
                         continue;
                     }
@@ -94,10 +92,10 @@ impl Coder {
                 let coded = self
                     .lzw
                     .compress(size, pixels, plain, budget, &mut self.candidate);
-                if let Some(codes) = coded {
+                if coded.is_some() {
                     swap(best, &mut self.candidate);
                     budget = best.len();
-                    winner_codes = codes;
+                    winner_fork = self.lzw.fork();
                     self.winner.clone_from(pixels);
                     code_size = size;
                     chosen = Encoding {
@@ -107,18 +105,31 @@ impl Coder {
                 }
             }
         }
-        if winner_codes > SMALL_DICTIONARY.max_codes {
-            let small = SMALL_DICTIONARY;
-            let pixels = &self.winner;
-            let coded = self
-                .lzw
-                .compress(code_size, pixels, small, budget, &mut self.candidate);
+        if let Some(fork) = winner_fork {
+            let coded = self.lzw.compress_small_from(
+                fork,
+                code_size,
+                &self.winner,
+                best,
+                budget,
+                &mut self.candidate,
+            );
             if coded.is_some() {
                 swap(best, &mut self.candidate);
             }
         }
         chosen
     }
+}
+
+/// The share of a frame's runs that marking must remove before the marked layout is coded:
+/// one in a hundred. Marking that removes fewer never won on a bundled scene (docs/gif.md),
+/// and coding it costs two more passes.
+pub const MIN_RUNS_SAVED: f64 = 0.01;
+
+/// Whether going from `before` runs to `after` removes at least [`MIN_RUNS_SAVED`] of them.
+fn saves_runs(before: usize, after: usize) -> bool {
+    (after as f64) <= (before as f64) * (1.0 - MIN_RUNS_SAVED)
 }
 
 /// How many runs of one index `pixels` holds.

@@ -4,7 +4,8 @@
 //! only the scene's colours (padded to a power of two, as GIF requires). After the first
 //! frame, each frame is only the rectangle that changed ([`super::delta`]), laid over the
 //! last one (disposal Keep), written in whichever of a few encodings is smallest
-//! ([`super::cheapest`]). Frames wait in a queue of bounded size; a full queue goes to a
+//! ([`super::cheapest`]). A frame identical to the one before is not written at all: the one
+//! before is shown that much longer (its delay grows), as `gifsicle -O` does. Frames wait in a queue of bounded size; a full queue goes to a
 //! background thread that encodes it on every core at once (rayon) while the caller draws
 //! and queues the next frames, and comes back to be written in order. Two queues take turns,
 //! so memory stays flat however many frames a run has, and their buffers serve the whole run.
@@ -13,6 +14,7 @@ use std::borrow::Cow;
 use std::io::{self, Write};
 use std::mem::take;
 use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
+use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};
 
@@ -45,6 +47,9 @@ pub struct GifWriter<W: Write> {
     delay_cs: u16,
     /// What a viewer shows after the frames queued so far (None before the first).
     shown: Option<IndexedFrame>,
+    /// How long the last frame of the batch being encoded shows, cs: it grows while frames
+    /// identical to it come and the next batch is still empty.
+    in_flight_last_delay: u16,
     /// The batch being filled; its coders are here while no batch is being encoded.
     filling: Batch,
     /// The other batch's frames and coders while it is being encoded, or back and spare.
@@ -71,29 +76,21 @@ struct Batch {
 }
 
 impl Batch {
-    /// Encodes every queued frame, all cores at once.
+    /// Encodes every queued frame, all cores at once: each coder takes the next frame not yet
+    /// taken, so a core that drew small frames goes on to help with the rest.
     fn encode(&mut self) {
         let started = Instant::now();
         let table_len = self.table_len;
-        let frames = &mut self.frames[..self.queued];
-        // Each coder takes an equal run of the queue, so each keeps its table hot.
-        let per_coder = frames.len().div_ceil(self.coders.len()).max(1);
-        frames
-            .par_chunks_mut(per_coder)
-            .zip(self.coders.par_iter_mut())
-            .for_each(|(frames, coder)| {
-                for frame in frames {
-                    let beneath = (!frame.beneath.is_empty()).then_some(&frame.beneath[..]);
-                    let width = frame.rect.width as usize;
-                    frame.encoding = coder.encode_cheapest(
-                        &frame.pixels,
-                        width,
-                        beneath,
-                        table_len,
-                        &mut frame.lzw,
-                    );
-                }
-            });
+        let frames = Mutex::new(self.frames[..self.queued].iter_mut());
+        let next_frame = || frames.lock().expect("no coder panics").next();
+        self.coders.par_iter_mut().for_each(|coder| {
+            while let Some(frame) = next_frame() {
+                let beneath = (!frame.beneath.is_empty()).then_some(&frame.beneath[..]);
+                let width = frame.rect.width as usize;
+                frame.encoding =
+                    coder.encode_cheapest(&frame.pixels, width, beneath, table_len, &mut frame.lzw);
+            }
+        });
         self.took = started.elapsed();
     }
 }
@@ -120,6 +117,8 @@ struct Queued {
     lzw: Vec<u8>,
     /// How `lzw` was encoded: what the frame's header must say.
     encoding: Encoding,
+    /// How long the frame shows, cs: longer than a frame's time when identical frames follow.
+    delay_cs: u16,
 }
 
 /// Where a GIF writer's time went, summed over the frames so far (wall-clock).
@@ -188,6 +187,7 @@ impl<W: Write> GifWriter<W> {
             height: height.into(),
             delay_cs,
             shown: None,
+            in_flight_last_delay: 0,
             filling: batch(coders),
             spare: Some(batch(Vec::new())),
             in_flight: false,
@@ -212,21 +212,27 @@ impl<W: Write> GifWriter<W> {
             ));
         }
         let started = Instant::now();
+        let changed = self.shown.as_ref().map(|shown| changed_rect(shown, frame));
+        if changed == Some(None) && self.show_last_longer() {
+            self.timings.changes += started.elapsed();
+            return Ok(());
+        }
         let slot = &mut self.filling.frames[self.filling.queued];
-        match &mut self.shown {
-            None => {
-                slot.rect = Rect::whole(frame);
-                slot.beneath.clear();
-                self.shown = Some(frame.clone());
-            }
-            Some(shown) => {
-                let changed = changed_rect(shown, frame);
-                // An unchanged frame is still written, as one pixel, so it keeps its time.
+        slot.delay_cs = self.delay_cs;
+        match (&mut self.shown, changed) {
+            (Some(shown), Some(changed)) => {
+                // An unchanged frame whose time cannot be added to the last one's is written
+                // as one pixel, so it keeps its time.
                 slot.rect = changed.unwrap_or(Rect::corner());
                 crop(shown, slot.rect, &mut slot.beneath);
                 if let Some(changed) = changed {
                     paste(frame, changed, shown);
                 }
+            }
+            _ => {
+                slot.rect = Rect::whole(frame);
+                slot.beneath.clear();
+                self.shown = Some(frame.clone());
             }
         }
         crop(frame, slot.rect, &mut slot.pixels);
@@ -236,6 +242,23 @@ impl<W: Write> GifWriter<W> {
             self.hand_over()?;
         }
         Ok(())
+    }
+
+    /// Adds one frame's time to the last frame queued, if its delay has room (and frames
+    /// show for some time at all); returns whether it did.
+    fn show_last_longer(&mut self) -> bool {
+        let delay = match self.filling.queued.checked_sub(1) {
+            Some(last) => &mut self.filling.frames[last].delay_cs,
+            None if self.in_flight => &mut self.in_flight_last_delay,
+            None => return false,
+        };
+        match delay.checked_add(self.delay_cs) {
+            Some(longer) if self.delay_cs > 0 => {
+                *delay = longer;
+                true
+            }
+            _ => false,
+        }
     }
 
     /// Sends the full batch to the encoding thread and goes on with the other one (after
@@ -248,6 +271,7 @@ impl<W: Write> GifWriter<W> {
             .take()
             .expect("the spare batch is back after collect");
         let full = std::mem::replace(&mut self.filling, next);
+        self.in_flight_last_delay = full.frames[full.queued - 1].delay_cs;
         self.to_encoder.send(full).map_err(|_| encoder_gone())?;
         self.in_flight = true;
         Ok(())
@@ -262,14 +286,20 @@ impl<W: Write> GifWriter<W> {
         let mut batch = self.from_encoder.recv().map_err(|_| encoder_gone())?;
         self.in_flight = false;
         let started = Instant::now();
-        for queued in &batch.frames[..batch.queued] {
+        let last = batch.queued - 1;
+        for (n, queued) in batch.frames[..batch.queued].iter().enumerate() {
             let rect = queued.rect;
+            let delay = if n == last {
+                self.in_flight_last_delay
+            } else {
+                queued.delay_cs
+            };
             let frame = gif::Frame {
                 left: rect.left as u16,
                 top: rect.top as u16,
                 width: rect.width as u16,
                 height: rect.height as u16,
-                delay: self.delay_cs,
+                delay,
                 dispose: gif::DisposalMethod::Keep,
                 transparent: queued.encoding.transparent,
                 interlaced: queued.encoding.interlaced,

@@ -31,6 +31,32 @@ impl Choices {
     pub const GREEDY: Choices = Choices {
         max_codes: MAX_CODES,
     };
+
+    /// A small dictionary, cleared every 512 codes: its codes stay at most 9 bits, which
+    /// suits images with few strings (measured in docs/gif.md).
+    pub const SMALL: Choices = Choices { max_codes: 512 };
+}
+
+/// Where a coding stood when its dictionary first held [`Choices::SMALL`]'s number of codes.
+/// Up to there a coding with the small dictionary writes the very same bytes, so it can
+/// start from here ([`Lzw::compress_small_from`]) instead of from the first pixel.
+#[derive(Clone, Copy, Debug)]
+pub struct Fork {
+    state: Coding,
+    /// How many bytes were written, and the bits not yet making up a byte.
+    bytes: usize,
+    pending: u32,
+    pending_bits: u8,
+}
+
+/// Where a coding is: the next pixel to read, the code width, the next free code, and the
+/// most codes the dictionary has held.
+#[derive(Clone, Copy, Debug)]
+struct Coding {
+    at: usize,
+    width: u8,
+    free: u16,
+    most: u16,
 }
 
 /// An LZW coder. Its dictionary table is big (2 MB) and built once, then reused for every
@@ -42,6 +68,8 @@ pub struct Lzw {
     next: Vec<u16>,
     /// The entries of `next` set since the last clear.
     set: Vec<usize>,
+    /// The last coding's fork, if its dictionary grew that far.
+    fork: Option<Fork>,
 }
 
 impl Default for Lzw {
@@ -56,6 +84,7 @@ impl Lzw {
         Lzw {
             next: vec![0; usize::from(MAX_CODES) * 256],
             set: Vec::with_capacity(usize::from(MAX_CODES)),
+            fork: None,
         }
     }
 
@@ -74,57 +103,102 @@ impl Lzw {
     ) -> Option<u16> {
         out.clear();
         out.push(min_code_size);
-        let clear = 1u16 << min_code_size;
-        let end = clear + 1;
-        let max_codes = choices.max_codes.min(MAX_CODES);
         let mut bits = BitPacker::new(out);
-        let mut width = min_code_size + 1;
-        let mut free = end + 1;
-        let mut most = free;
-        bits.put(clear, width);
-        let mut at = 0;
-        while at < pixels.len() {
-            let (code, len) = self.longest_match(&pixels[at..]);
-            bits.put(code, width);
+        let start = Coding {
+            at: 0,
+            width: min_code_size + 1,
+            free: (1 << min_code_size) + 2,
+            most: 0,
+        };
+        bits.put(1 << min_code_size, start.width);
+        self.fork = None;
+        self.code(start, min_code_size, pixels, choices, budget, bits)
+    }
+
+    /// Where the last finished [`Lzw::compress`] could fork into a small dictionary: `None`
+    /// if its dictionary never held that many codes (then the two codings are the same).
+    pub fn fork(&self) -> Option<Fork> {
+        self.fork
+    }
+
+    /// The same as compressing `pixels` again with [`Choices::SMALL`], but starting from
+    /// `fork`, a fork of the coding whose output is `first` (same pixels, same code size).
+    pub fn compress_small_from(
+        &mut self,
+        fork: Fork,
+        min_code_size: u8,
+        pixels: &[u8],
+        first: &[u8],
+        budget: usize,
+        out: &mut Vec<u8>,
+    ) -> Option<u16> {
+        out.clear();
+        out.extend_from_slice(&first[..fork.bytes]);
+        let mut bits = BitPacker {
+            out,
+            pending: fork.pending,
+            pending_bits: fork.pending_bits,
+        };
+        // The small dictionary is full exactly here, so it clears.
+        let mut state = fork.state;
+        clear_dictionary(&mut state, min_code_size, &mut bits);
+        self.code(state, min_code_size, pixels, Choices::SMALL, budget, bits)
+    }
+
+    /// Codes `pixels` from `state` on: the LZW loop itself.
+    fn code(
+        &mut self,
+        mut state: Coding,
+        min_code_size: u8,
+        pixels: &[u8],
+        choices: Choices,
+        budget: usize,
+        mut bits: BitPacker,
+    ) -> Option<u16> {
+        let end = (1u16 << min_code_size) + 1;
+        let max_codes = choices.max_codes.min(MAX_CODES);
+        while state.at < pixels.len() {
+            let (code, len) = self.longest_match(&pixels[state.at..]);
+            bits.put(code, state.width);
             if bits.out.len() >= budget {
                 self.forget();
                 return None;
             }
-            at += len;
-            let Some(&byte) = pixels.get(at) else {
+            state.at += len;
+            let Some(&byte) = pixels.get(state.at) else {
                 break;
             };
-            if free < max_codes {
+            if state.free == Choices::SMALL.max_codes && self.fork.is_none() {
+                self.fork = Some(Fork {
+                    state,
+                    bytes: bits.out.len(),
+                    pending: bits.pending,
+                    pending_bits: bits.pending_bits,
+                });
+            }
+            if state.free < max_codes {
                 let slot = slot(code, byte);
-                self.next[slot] = free;
+                self.next[slot] = state.free;
                 self.set.push(slot);
-                free += 1;
+                state.free += 1;
                 // The decoder adds each code one code after we do, and widens once its
                 // next free code no longer fits: so we widen once ours is one past that.
-                if free > 1 << width {
-                    width += 1;
+                if state.free > 1 << state.width {
+                    state.width += 1;
                 }
             } else {
-                // The decoder has caught up when it reads the clear code, so it reads it at
-                // the width its own next free code needs.
-                if free == 1 << width && width < MAX_CODE_BITS {
-                    width += 1;
-                }
-                bits.put(clear, width);
+                clear_dictionary(&mut state, min_code_size, &mut bits);
                 self.forget();
-                most = most.max(free);
-                width = min_code_size + 1;
-                free = end + 1;
             }
         }
         // Likewise for the end code, read once the decoder has caught up.
-        if !pixels.is_empty() && free == 1 << width && width < MAX_CODE_BITS {
-            width += 1;
+        if !pixels.is_empty() && state.free == 1 << state.width && state.width < MAX_CODE_BITS {
+            state.width += 1;
         }
-        bits.put(end, width);
-        bits.finish();
+        bits.put(end, state.width);
+        let written = bits.finish();
         self.forget();
-        (out.len() < budget).then_some(most.max(free))
+        (written < budget).then_some(state.most.max(state.free))
     }
 
     /// The code of the longest string in the dictionary that `pixels` starts with, and its
@@ -147,6 +221,19 @@ impl Lzw {
             self.next[slot] = 0;
         }
     }
+}
+
+/// Writes a clear code and starts the codes afresh (the caller empties the dictionary).
+fn clear_dictionary(state: &mut Coding, min_code_size: u8, bits: &mut BitPacker) {
+    // The decoder has caught up when it reads the clear code, so it reads it at the width
+    // its own next free code needs.
+    if state.free == 1 << state.width && state.width < MAX_CODE_BITS {
+        state.width += 1;
+    }
+    bits.put(1 << min_code_size, state.width);
+    state.most = state.most.max(state.free);
+    state.width = min_code_size + 1;
+    state.free = (1 << min_code_size) + 2;
 }
 
 /// Where `Lzw::next` keeps the code of string `code` followed by `byte`.
@@ -180,10 +267,12 @@ impl<'a> BitPacker<'a> {
         }
     }
 
-    fn finish(self) {
+    /// Writes the last bits out; returns how many bytes were written in all.
+    fn finish(self) -> usize {
         if self.pending_bits > 0 {
             self.out.push(self.pending as u8);
         }
+        self.out.len()
     }
 }
 

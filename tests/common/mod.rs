@@ -55,6 +55,27 @@ pub struct DecodedGif {
     pub repeat: gif::Repeat,
 }
 
+impl DecodedGif {
+    /// The frames as a viewer sees them over time, one per `frame_cs`: a frame shown for k
+    /// frames' time (the encoder merges identical frames into the one before) comes k times.
+    /// With `frame_cs` 0 no frame is merged, and the frames are as stored.
+    pub fn timeline(&self, frame_cs: u16) -> Vec<&RgbImage> {
+        if frame_cs == 0 {
+            return self.frames.iter().collect();
+        }
+        let shown = self.frames.iter().zip(&self.delays_cs);
+        shown
+            .flat_map(|(frame, &delay)| {
+                assert!(
+                    delay > 0 && delay % frame_cs == 0,
+                    "a delay of {delay} cs is not a whole number of {frame_cs} cs frames"
+                );
+                std::iter::repeat_n(frame, usize::from(delay / frame_cs))
+            })
+            .collect()
+    }
+}
+
 /// Decodes a GIF, compositing each frame over the previous one (disposal Keep and
 /// transparency), so tests see exactly what a viewer shows.
 ///
