@@ -340,38 +340,78 @@ fn lzw_with_a_small_dictionary_decodes_to_the_same_indices_for_every_code_size()
 }
 
 #[test]
-fn a_small_dictionary_started_from_the_fork_writes_the_same_bytes_as_from_the_start() {
+fn a_dictionary_choice_started_from_its_fork_writes_the_same_bytes_as_from_the_start() {
     let mut random = Random::new(12);
-    let (mut lzw, mut first, mut resumed, mut whole) =
-        (Lzw::new(), Vec::new(), Vec::new(), Vec::new());
+    let mut lzw = Lzw::new();
+    let mut forked = 0;
     for colours in [2, 5, 16, 129] {
         for (width, height) in [(40, 30), (200, 150)] {
             let frame = random_frame(width, height, colours, &mut random);
-            let size = min_code_size(colours);
-            let pixels = frame.as_raw();
-            let expected = lzw.compress(size, pixels, Choices::SMALL, usize::MAX, &mut whole);
-            lzw.compress(size, pixels, Choices::GREEDY, usize::MAX, &mut first);
-            let Some(fork) = lzw.fork() else {
-                assert!(
-                    expected.is_some_and(|codes| codes <= Choices::SMALL.max_codes),
-                    "{colours} colours, {width}x{height}: no fork, so the dictionary stayed small"
-                );
-                continue;
-            };
-            let codes =
-                lzw.compress_small_from(fork, size, pixels, &first, usize::MAX, &mut resumed);
-            assert_eq!(
-                codes, expected,
-                "{colours} colours, {width}x{height}: codes held"
-            );
-            assert!(
-                resumed == whole,
-                "{colours} colours, {width}x{height}: {} B from the fork, {} B from the start",
-                resumed.len(),
-                whole.len()
-            );
+            // Noise, so that the dictionary fills (the frames above are blocky).
+            let noise: Vec<u8> = (0..width * height)
+                .map(|_| (random.next_u64() % colours as u64) as u8)
+                .collect();
+            for pixels in [frame.as_raw(), &noise] {
+                forked += assert_fork_equals_start(&mut lzw, colours, (width, height), pixels);
+            }
         }
     }
+    assert!(
+        forked >= 8,
+        "only {forked} codings forked: the test checks too little"
+    );
+}
+
+/// Codes `pixels` with each dictionary choice from the start, and from the greedy coding's
+/// fork, and checks the two are the same bytes and decode to `pixels`. Returns how many
+/// choices forked (the others never grew the dictionary that far).
+fn assert_fork_equals_start(
+    lzw: &mut Lzw,
+    colours: usize,
+    (width, height): (u32, u32),
+    pixels: &[u8],
+) -> usize {
+    let (mut first, mut resumed, mut whole) = (Vec::new(), Vec::new(), Vec::new());
+    let size = min_code_size(colours);
+    let mut forked = 0;
+    for choices in [Choices::SMALL, Choices::KEEP_FULL] {
+        let expected = lzw.compress(size, pixels, choices, usize::MAX, &mut whole);
+        lzw.compress(size, pixels, Choices::GREEDY, usize::MAX, &mut first);
+        let forks = lzw.forks();
+        let fork = if choices == Choices::SMALL {
+            forks.small
+        } else {
+            forks.full
+        };
+        let case = format!("{colours} colours, {width}x{height}, {choices:?}");
+        let Some(fork) = fork else {
+            assert!(
+                whole == first,
+                "{case}: no fork, so the coding is the greedy one"
+            );
+            continue;
+        };
+        forked += 1;
+        let codes = lzw.compress_from(
+            fork,
+            choices,
+            size,
+            pixels,
+            &first,
+            usize::MAX,
+            &mut resumed,
+        );
+        assert_eq!(codes, expected, "{case}: codes held");
+        assert!(
+            resumed == whole,
+            "{case}: {} B from the fork, {} B from the start",
+            resumed.len(),
+            whole.len()
+        );
+        let decoded = decode_lzw(width as u16, height as u16, colours, &whole);
+        assert!(decoded == pixels, "{case}: decoded indices differ");
+    }
+    forked
 }
 
 #[test]

@@ -3,22 +3,26 @@
 //! the output is the same on any number of threads.
 //!
 //! First the layouts, each with the plain LZW coder:
-//! - the changed rectangle as it is, or with its mixed stretches of unchanged pixels
-//!   transparent ([`super::transparency`]), when an index is free to mean that and the
-//!   marking leaves at least [`MIN_RUNS_SAVED`] fewer runs of one index (else it is skipped);
+//! - the changed rectangle as it is; with its mixed stretches of unchanged pixels
+//!   transparent; or with every unchanged pixel transparent ([`super::transparency`]). A
+//!   marked layout is tried when an index is free to mean transparent and the marking leaves
+//!   at least [`MIN_RUNS_SAVED`] fewer runs of one index (else it is skipped); marking every
+//!   unchanged pixel only after marking mixed stretches was tried;
 //! - each in normal or interlaced row order ([`super::interlace`]).
 //!
-//! Then the winning layout once more with a small dictionary ([`Choices::SMALL`]), when its
-//! first coding used more codes than that (else the two are the same); that coding starts
-//! where the first one's dictionary reached the small size, since up to there the two write
-//! the same bytes. Every candidate uses the smallest code size its indices allow, and gives
-//! up as soon as it is no smaller than the best so far.
+//! Each also with a full dictionary kept to the end ([`Choices::KEEP_FULL`]) instead of
+//! cleared, when the dictionary fills; and the winning layout with a small dictionary
+//! ([`Choices::SMALL`]), when its dictionary grew past that (else the codings are the same).
+//! These start where the greedy coding's dictionary reached their size, since up to there
+//! the two write the same bytes.
+//! Every candidate uses the smallest code size its indices allow, and gives up as soon as it
+//! is no smaller than the best so far.
 
 use std::mem::swap;
 
 use super::interlace::interlace;
-use super::lzw::{min_code_size, Choices, Fork, Lzw};
-use super::transparency::{mark_mixed_stretches, transparent_index};
+use super::lzw::{min_code_size, Choices, Lzw};
+use super::transparency::{mark_mixed_stretches, mark_unchanged, transparent_index};
 
 /// How a frame was encoded, for its header.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -40,8 +44,9 @@ pub struct Coder {
     interlaced: Vec<u8>,
     /// The winning layout so far, in the order it is stored.
     winner: Vec<u8>,
-    /// A candidate's compressed bytes.
+    /// A candidate's compressed bytes, and another's made from the first part of them.
     candidate: Vec<u8>,
+    other: Vec<u8>,
 }
 
 impl Coder {
@@ -62,21 +67,31 @@ impl Coder {
         let mut chosen = Encoding::default();
         let mut code_size = 0;
         let mut budget = usize::MAX;
-        let mut winner_fork: Option<Fork> = None;
-        for marked in std::iter::once(None).chain(transparent.map(Some)) {
-            let largest_index = match marked {
-                None => {
+        let mut winner_small_fork = None;
+        let runs_as_is = runs(current);
+        let mut mixed_tried = false;
+        for layout in [Layout::AsIs, Layout::MixedStretches, Layout::AllUnchanged] {
+            let largest_index = match (layout, transparent) {
+                (Layout::AsIs, _) => {
                     self.layout.clear();
                     self.layout.extend_from_slice(current);
                     largest(current)
                 }
-                Some((under, index)) => {
+                (_, None) => continue,
+                (_, Some((under, index))) => {
+                    let marked = match layout {
+                        Layout::MixedStretches => {
+                            mark_mixed_stretches(current, under, index, &mut self.layout)
+                        }
+                        // Where marking mixed stretches does not pay, marking more never did.
+                        _ if !mixed_tried => continue,
+                        _ => mark_unchanged(current, under, index, &mut self.layout),
+                    };
                     // Nothing marked is the layout already tried.
-                    if mark_mixed_stretches(current, under, index, &mut self.layout) == 0
-                        || !saves_runs(runs(current), runs(&self.layout))
-                    {
+                    if marked == 0 || !saves_runs(runs_as_is, runs(&self.layout)) {
                         continue;
                     }
+                    mixed_tried |= layout == Layout::MixedStretches;
                     largest(&self.layout).max(index)
                 }
             };
@@ -88,26 +103,55 @@ impl Coder {
                 } else {
                     &self.layout
                 };
-                let plain = Choices::GREEDY;
+                let greedy = Choices::GREEDY;
                 let coded = self
                     .lzw
-                    .compress(size, pixels, plain, budget, &mut self.candidate);
-                if coded.is_some() {
+                    .compress(size, pixels, greedy, budget, &mut self.candidate);
+                let forks = self.lzw.forks();
+                let mut won = coded.is_some();
+                if won {
                     swap(best, &mut self.candidate);
                     budget = best.len();
-                    winner_fork = self.lzw.fork();
+                }
+                // A dictionary kept full only differs once it fills (big frames), so it is
+                // tried on every layout; a given-up coding still holds the bytes up to there.
+                if let Some(fork) = forks.full {
+                    let first = if won { &best[..] } else { &self.candidate[..] };
+                    let keep_full = Choices::KEEP_FULL;
+                    let coded = self.lzw.compress_from(
+                        fork,
+                        keep_full,
+                        size,
+                        pixels,
+                        first,
+                        budget,
+                        &mut self.other,
+                    );
+                    if coded.is_some() {
+                        swap(best, &mut self.other);
+                        budget = best.len();
+                        won = true;
+                    }
+                }
+                if won {
+                    winner_small_fork = forks.small;
                     self.winner.clone_from(pixels);
                     code_size = size;
                     chosen = Encoding {
-                        transparent: marked.map(|(_, index)| index),
+                        transparent: match layout {
+                            Layout::AsIs => None,
+                            _ => transparent.map(|(_, index)| index),
+                        },
                         interlaced,
                     };
                 }
             }
         }
-        if let Some(fork) = winner_fork {
-            let coded = self.lzw.compress_small_from(
+        // The best coding's bytes are the greedy coding's up to the small fork.
+        if let Some(fork) = winner_small_fork {
+            let coded = self.lzw.compress_from(
                 fork,
+                Choices::SMALL,
                 code_size,
                 &self.winner,
                 best,
@@ -120,6 +164,17 @@ impl Coder {
         }
         chosen
     }
+}
+
+/// Which pixels of the changed rectangle a layout writes as transparent.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Layout {
+    /// None.
+    AsIs,
+    /// Stretches of unchanged pixels that hold more than one colour.
+    MixedStretches,
+    /// Every unchanged pixel.
+    AllUnchanged,
 }
 
 /// The share of a frame's runs that marking must remove before the marked layout is coded:

@@ -18,31 +18,50 @@
 const MAX_CODE_BITS: u8 = 12;
 /// So a dictionary holds at most this many codes.
 const MAX_CODES: u16 = 1 << MAX_CODE_BITS;
+/// Entries in the dictionary's table: one per code and byte.
+const TABLE_LEN: usize = (MAX_CODES as usize) << 8;
 
 /// How the coder chooses, where each choice keeps the output a valid GIF.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Choices {
-    /// The dictionary is cleared once it holds this many codes (at most 4096).
+    /// The dictionary is full once it holds this many codes (at most 4096).
     pub max_codes: u16,
+    /// What happens then: a clear code and a fresh dictionary, or (when false) the full
+    /// dictionary kept as it is to the end of the image, adding nothing more (a "deferred
+    /// clear", which every decoder follows).
+    pub clear_when_full: bool,
 }
 
 impl Choices {
     /// The plain coder every GIF writer uses: clearing only a full 4096-code dictionary.
     pub const GREEDY: Choices = Choices {
         max_codes: MAX_CODES,
+        clear_when_full: true,
     };
 
     /// A small dictionary, cleared every 512 codes: its codes stay at most 9 bits, which
     /// suits images with few strings (measured in docs/gif.md).
-    pub const SMALL: Choices = Choices { max_codes: 512 };
+    pub const SMALL: Choices = Choices {
+        max_codes: 512,
+        clear_when_full: true,
+    };
+
+    /// The full dictionary kept once it fills: suits big images whose first part holds the
+    /// strings of the rest (gifsicle -O3 does the same).
+    pub const KEEP_FULL: Choices = Choices {
+        max_codes: MAX_CODES,
+        clear_when_full: false,
+    };
 }
 
-/// Where a coding stood when its dictionary first held [`Choices::SMALL`]'s number of codes.
-/// Up to there a coding with the small dictionary writes the very same bytes, so it can
-/// start from here ([`Lzw::compress_small_from`]) instead of from the first pixel.
+/// Where a greedy coding stood when its dictionary first held as many codes as another
+/// choice's is allowed. Up to there the two write the very same bytes, so the other can start
+/// from here ([`Lzw::compress_from`]) instead of from the first pixel.
 #[derive(Clone, Copy, Debug)]
 pub struct Fork {
     state: Coding,
+    /// Which coding it forks from (the coder counts its codings).
+    coding: u64,
     /// How many bytes were written, and the bits not yet making up a byte.
     bytes: usize,
     pending: u32,
@@ -59,17 +78,28 @@ struct Coding {
     most: u16,
 }
 
+/// The last coding's forks: where its dictionary first held [`Choices::SMALL`]'s number of
+/// codes, and where it was first full.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Forks {
+    pub small: Option<Fork>,
+    pub full: Option<Fork>,
+}
+
 /// An LZW coder. Its dictionary table is big (2 MB) and built once, then reused for every
 /// image it compresses: only the entries an image set are cleared afterwards.
 pub struct Lzw {
     /// `next[byte * 4096 + code]`: the code of string `code` followed by `byte`, or 0 while
     /// that string is not in the dictionary (0 is a one-byte string, never a longer one).
     /// Byte-major, so a run of one colour walks neighbouring entries.
-    next: Vec<u16>,
+    next: Box<[u16; TABLE_LEN]>,
     /// The entries of `next` set since the last clear.
     set: Vec<usize>,
-    /// The last coding's fork, if its dictionary grew that far.
-    fork: Option<Fork>,
+    forks: Forks,
+    /// How many codings the coder has begun, and the last one's dictionary where it was
+    /// first full (`set` then): a coding that keeps it full goes on from there.
+    codings: u64,
+    full_dictionary: Vec<usize>,
 }
 
 impl Default for Lzw {
@@ -82,9 +112,14 @@ impl Lzw {
     /// A coder with an empty dictionary.
     pub fn new() -> Lzw {
         Lzw {
-            next: vec![0; usize::from(MAX_CODES) * 256],
+            next: vec![0; TABLE_LEN]
+                .into_boxed_slice()
+                .try_into()
+                .expect("a table of TABLE_LEN entries"),
             set: Vec::with_capacity(usize::from(MAX_CODES)),
-            fork: None,
+            forks: Forks::default(),
+            codings: 0,
+            full_dictionary: Vec::with_capacity(usize::from(MAX_CODES)),
         }
     }
 
@@ -111,21 +146,26 @@ impl Lzw {
             most: 0,
         };
         bits.put(1 << min_code_size, start.width);
-        self.fork = None;
+        self.forks = Forks::default();
+        self.codings += 1;
         self.code(start, min_code_size, pixels, choices, budget, bits)
     }
 
-    /// Where the last finished [`Lzw::compress`] could fork into a small dictionary: `None`
-    /// if its dictionary never held that many codes (then the two codings are the same).
-    pub fn fork(&self) -> Option<Fork> {
-        self.fork
+    /// Where the last finished greedy [`Lzw::compress`] could fork into another choice; a
+    /// fork is `None` when the dictionary never grew that far (then both codings are the same).
+    pub fn forks(&self) -> Forks {
+        self.forks
     }
 
-    /// The same as compressing `pixels` again with [`Choices::SMALL`], but starting from
-    /// `fork`, a fork of the coding whose output is `first` (same pixels, same code size).
-    pub fn compress_small_from(
+    /// The same as compressing `pixels` again with `choices`, but starting from `fork`, the
+    /// fork for `choices` of the greedy coding whose output is `first` (same pixels, same code
+    /// size). A fork into a dictionary kept full needs that dictionary, which the coder keeps
+    /// only until its next [`Lzw::compress`].
+    #[allow(clippy::too_many_arguments)]
+    pub fn compress_from(
         &mut self,
         fork: Fork,
+        choices: Choices,
         min_code_size: u8,
         pixels: &[u8],
         first: &[u8],
@@ -139,10 +179,23 @@ impl Lzw {
             pending: fork.pending,
             pending_bits: fork.pending_bits,
         };
-        // The small dictionary is full exactly here, so it clears.
+        // Here the dictionary has just reached `choices`' size: the greedy coding went on
+        // (or cleared), this one does what its choices say.
         let mut state = fork.state;
-        clear_dictionary(&mut state, min_code_size, &mut bits);
-        self.code(state, min_code_size, pixels, Choices::SMALL, budget, bits)
+        if state.free >= choices.max_codes && choices.clear_when_full {
+            clear_dictionary(&mut state, min_code_size, &mut bits);
+        } else {
+            assert_eq!(
+                fork.coding, self.codings,
+                "a fork into a full dictionary is taken before the next coding"
+            );
+            let first_code = (1 << min_code_size) + 2;
+            for (code, &slot) in (first_code..).zip(&self.full_dictionary) {
+                self.next[slot] = code;
+            }
+            self.set.clone_from(&self.full_dictionary);
+        }
+        self.code(state, min_code_size, pixels, choices, budget, bits)
     }
 
     /// Codes `pixels` from `state` on: the LZW loop itself.
@@ -168,14 +221,7 @@ impl Lzw {
             let Some(&byte) = pixels.get(state.at) else {
                 break;
             };
-            if state.free == Choices::SMALL.max_codes && self.fork.is_none() {
-                self.fork = Some(Fork {
-                    state,
-                    bytes: bits.out.len(),
-                    pending: bits.pending,
-                    pending_bits: bits.pending_bits,
-                });
-            }
+            self.note_fork(state, &bits);
             if state.free < max_codes {
                 let slot = slot(code, byte);
                 self.next[slot] = state.free;
@@ -186,7 +232,7 @@ impl Lzw {
                 if state.free > 1 << state.width {
                     state.width += 1;
                 }
-            } else {
+            } else if choices.clear_when_full {
                 clear_dictionary(&mut state, min_code_size, &mut bits);
                 self.forget();
             }
@@ -199,6 +245,28 @@ impl Lzw {
         let written = bits.finish();
         self.forget();
         (written < budget).then_some(state.most.max(state.free))
+    }
+
+    /// Keeps where the dictionary first reached the small size, and where it was first full.
+    fn note_fork(&mut self, state: Coding, bits: &BitPacker) {
+        let fork = match state.free {
+            free if free == Choices::SMALL.max_codes => &mut self.forks.small,
+            MAX_CODES => &mut self.forks.full,
+            _ => return,
+        };
+        if fork.is_some() {
+            return;
+        }
+        *fork = Some(Fork {
+            state,
+            coding: self.codings,
+            bytes: bits.out.len(),
+            pending: bits.pending,
+            pending_bits: bits.pending_bits,
+        });
+        if state.free == MAX_CODES {
+            self.full_dictionary.clone_from(&self.set);
+        }
     }
 
     /// The code of the longest string in the dictionary that `pixels` starts with, and its
@@ -238,7 +306,9 @@ fn clear_dictionary(state: &mut Coding, min_code_size: u8, bits: &mut BitPacker)
 
 /// Where `Lzw::next` keeps the code of string `code` followed by `byte`.
 fn slot(code: u16, byte: u8) -> usize {
-    usize::from(byte) * usize::from(MAX_CODES) + usize::from(code)
+    // Codes are below 4096, so this is always inside the table, and the compiler can see it
+    // (no bounds check in the hot loop).
+    usize::from(byte) << MAX_CODE_BITS | usize::from(code & (MAX_CODES - 1))
 }
 
 /// Packs codes of any width into bytes, least significant bit first, as GIF wants.

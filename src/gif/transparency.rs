@@ -44,6 +44,27 @@ pub fn mark_mixed_stretches(
     marked
 }
 
+/// Writes `current` into `out` (cleared first) with every unchanged pixel set to
+/// `transparent`: the better marking when what stays the same is more varied than what
+/// changes (a heap of resting balls round a few moving ones). Returns how many it marked.
+pub fn mark_unchanged(current: &[u8], beneath: &[u8], transparent: u8, out: &mut Vec<u8>) -> usize {
+    out.clear();
+    out.extend(current.iter().zip(beneath).map(
+        |(&now, &before)| {
+            if now == before {
+                transparent
+            } else {
+                now
+            }
+        },
+    ));
+    current
+        .iter()
+        .zip(beneath)
+        .filter(|(now, before)| now == before)
+        .count()
+}
+
 /// The index to mark transparent: the lowest one that no changed pixel uses (a low index
 /// keeps the frame's code size small), below `table_len`. `None` when changed pixels use
 /// every index of the table.
