@@ -22,7 +22,9 @@ use std::mem::swap;
 
 use super::interlace::interlace;
 use super::lzw::{min_code_size, Choices, Lzw};
-use super::transparency::{mark_mixed_stretches, mark_unchanged, transparent_index};
+use super::transparency::{
+    mark_mixed_stretches, mark_unchanged, mixed_neighbours, transparent_index,
+};
 
 /// How a frame was encoded, for its header.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -62,13 +64,20 @@ impl Coder {
         table_len: usize,
         best: &mut Vec<u8>,
     ) -> Encoding {
-        let transparent =
-            beneath.and_then(|under| Some((under, transparent_index(current, under, table_len)?)));
+        let runs_as_is = runs(current);
+        // Marking removes at most one run per pair of neighbouring unchanged pixels of two
+        // colours: when those are too few, no marked layout can pass its test, so none is made.
+        let marking_can_pay = |under: &[u8]| {
+            let at_best = runs_as_is.saturating_sub(mixed_neighbours(current, under));
+            saves_runs(runs_as_is, at_best)
+        };
+        let transparent = beneath
+            .filter(|under| marking_can_pay(under))
+            .and_then(|under| Some((under, transparent_index(current, under, table_len)?)));
         let mut chosen = Encoding::default();
         let mut code_size = 0;
         let mut budget = usize::MAX;
         let mut winner_small_fork = None;
-        let runs_as_is = runs(current);
         let mut mixed_tried = false;
         for layout in [Layout::AsIs, Layout::MixedStretches, Layout::AllUnchanged] {
             let largest_index = match (layout, transparent) {
@@ -189,7 +198,8 @@ fn saves_runs(before: usize, after: usize) -> bool {
 
 /// How many runs of one index `pixels` holds.
 fn runs(pixels: &[u8]) -> usize {
-    1 + pixels.windows(2).filter(|pair| pair[0] != pair[1]).count()
+    let next = pixels.get(1..).unwrap_or_default();
+    1 + pixels.iter().zip(next).filter(|(a, b)| a != b).count()
 }
 
 /// The largest index in `pixels` (0 for none).

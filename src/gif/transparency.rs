@@ -65,6 +65,19 @@ pub fn mark_unchanged(current: &[u8], beneath: &[u8], transparent: u8, out: &mut
         .count()
 }
 
+/// How many neighbouring pairs of pixels (in reading order) are both unchanged and of two
+/// colours: marking removes at most this many runs, so it is the cheap test of whether
+/// marking can pay at all (on the lesson it never can).
+pub fn mixed_neighbours(current: &[u8], beneath: &[u8]) -> usize {
+    fn pairs(pixels: &[u8]) -> impl Iterator<Item = (&u8, &u8)> {
+        pixels.iter().zip(pixels.get(1..).unwrap_or_default())
+    }
+    pairs(current)
+        .zip(pairs(beneath))
+        .filter(|((a, b), (under_a, under_b))| a == under_a && b == under_b && a != b)
+        .count()
+}
+
 /// The index to mark transparent: the lowest one that no changed pixel uses (a low index
 /// keeps the frame's code size small), below `table_len`. `None` when changed pixels use
 /// every index of the table.
