@@ -23,7 +23,7 @@ use std::mem::swap;
 use super::interlace::interlace;
 use super::lzw::{min_code_size, Choices, Lzw};
 use super::transparency::{
-    mark_mixed_stretches, mark_unchanged, mixed_neighbours, transparent_index,
+    count_neighbours, mark_mixed_stretches, mark_unchanged, mixed_neighbours, transparent_index,
 };
 
 /// How a frame was encoded, for its header.
@@ -198,8 +198,7 @@ fn saves_runs(before: usize, after: usize) -> bool {
 
 /// How many runs of one index `pixels` holds.
 fn runs(pixels: &[u8]) -> usize {
-    let next = pixels.get(1..).unwrap_or_default();
-    1 + pixels.iter().zip(next).filter(|(a, b)| a != b).count()
+    1 + count_neighbours(pixels, pixels, |[now, next, _, _]| now != next)
 }
 
 /// The largest index in `pixels` (0 for none).

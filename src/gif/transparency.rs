@@ -69,13 +69,26 @@ pub fn mark_unchanged(current: &[u8], beneath: &[u8], transparent: u8, out: &mut
 /// colours: marking removes at most this many runs, so it is the cheap test of whether
 /// marking can pay at all (on the lesson it never can).
 pub fn mixed_neighbours(current: &[u8], beneath: &[u8]) -> usize {
-    fn pairs(pixels: &[u8]) -> impl Iterator<Item = (&u8, &u8)> {
-        pixels.iter().zip(pixels.get(1..).unwrap_or_default())
-    }
-    pairs(current)
-        .zip(pairs(beneath))
-        .filter(|((a, b), (under_a, under_b))| a == under_a && b == under_b && a != b)
-        .count()
+    count_neighbours(current, beneath, |[now, next, under_now, under_next]| {
+        (now == under_now) & (next == under_next) & (now != next)
+    })
+}
+
+/// How many neighbouring pixels `i`, `i + 1` (in reading order) make `pair` true, given
+/// `[current[i], current[i + 1], beneath[i], beneath[i + 1]]`. Counted in blocks of 255
+/// pairs, so each block's sum fits a byte and the compiler counts many pairs per instruction.
+pub fn count_neighbours(current: &[u8], beneath: &[u8], pair: impl Fn([u8; 4]) -> bool) -> usize {
+    let len = current.len().min(beneath.len()).saturating_sub(1);
+    let (now, next) = (current[..len].chunks(255), current[1..=len].chunks(255));
+    let (under_now, under_next) = (beneath[..len].chunks(255), beneath[1..=len].chunks(255));
+    now.zip(next)
+        .zip(under_now.zip(under_next))
+        .map(|((now, next), (under_now, under_next))| {
+            let block = now.iter().zip(next).zip(under_now.iter().zip(under_next));
+            let hits = block.map(|((&a, &b), (&c, &d))| u8::from(pair([a, b, c, d])));
+            usize::from(hits.sum::<u8>())
+        })
+        .sum()
 }
 
 /// The index to mark transparent: the lowest one that no changed pixel uses (a low index
