@@ -62,9 +62,9 @@ pub struct Fork {
     state: Coding,
     /// Which coding it forks from (the coder counts its codings).
     coding: u64,
-    /// How many bytes were written, and the bits not yet making up a byte.
+    /// How many bytes were written, and the bits not yet written.
     bytes: usize,
-    pending: u32,
+    pending: u64,
     pending_bits: u8,
 }
 
@@ -314,7 +314,8 @@ fn slot(code: u16, byte: u8) -> usize {
 /// Packs codes of any width into bytes, least significant bit first, as GIF wants.
 struct BitPacker<'a> {
     out: &'a mut Vec<u8>,
-    pending: u32,
+    /// Bits not yet written, lowest first: written four bytes at a time.
+    pending: u64,
     pending_bits: u8,
 }
 
@@ -328,20 +329,20 @@ impl<'a> BitPacker<'a> {
     }
 
     fn put(&mut self, code: u16, width: u8) {
-        self.pending |= u32::from(code) << self.pending_bits;
+        self.pending |= u64::from(code) << self.pending_bits;
         self.pending_bits += width;
-        while self.pending_bits >= 8 {
-            self.out.push(self.pending as u8);
-            self.pending >>= 8;
-            self.pending_bits -= 8;
+        if self.pending_bits >= 32 {
+            self.out.extend_from_slice(&(self.pending as u32).to_le_bytes());
+            self.pending >>= 32;
+            self.pending_bits -= 32;
         }
     }
 
     /// Writes the last bits out; returns how many bytes were written in all.
     fn finish(self) -> usize {
-        if self.pending_bits > 0 {
-            self.out.push(self.pending as u8);
-        }
+        let bytes = self.pending.to_le_bytes();
+        self.out
+            .extend_from_slice(&bytes[..usize::from(self.pending_bits.div_ceil(8))]);
         self.out.len()
     }
 }
