@@ -50,7 +50,10 @@ fn gifsicle(args: &[&str], gif: &Path, out: &Path) -> Option<u64> {
 /// `gifsicle -O3` of `gif` as it is, and of the same frames written whole first
 /// (`--unoptimize`: what gifsicle makes of these frames by itself).
 fn gifsicle_o3(gif: &Path) -> Option<(u64, u64)> {
-    let (whole, optimised) = (gif.with_extension("whole.gif"), gif.with_extension("O3.gif"));
+    let (whole, optimised) = (
+        gif.with_extension("whole.gif"),
+        gif.with_extension("O3.gif"),
+    );
     let of_ours = gifsicle(&["-O3"], gif, &optimised)?;
     gifsicle(&["--unoptimize"], gif, &whole)?;
     let of_frames = gifsicle(&["-O3"], &whole, &optimised)?;

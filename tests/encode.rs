@@ -185,6 +185,38 @@ fn the_changed_rectangle_is_the_bounding_box_of_the_changed_pixels() {
 }
 
 #[test]
+fn the_changed_rectangle_matches_a_pixel_by_pixel_search_on_wide_random_frames() {
+    let mut random = Random::new(21);
+    for case in 0..300 {
+        let (width, height) = (1 + random.next_u64() % 100, 1 + random.next_u64() % 20);
+        let before = random_frame(width as u32, height as u32, 7, &mut random);
+        let mut after = before.clone();
+        for _ in 0..random.next_u64() % 4 {
+            let (x, y) = (random.next_u64() % width, random.next_u64() % height);
+            let pixel = after.get_pixel_mut(x as u32, y as u32);
+            pixel.0[0] = pixel.0[0].wrapping_add(1);
+        }
+        let changed: Vec<(u32, u32)> = before
+            .enumerate_pixels()
+            .filter(|&(x, y, pixel)| after.get_pixel(x, y) != pixel)
+            .map(|(x, y, _)| (x, y))
+            .collect();
+        let expected = (!changed.is_empty()).then(|| {
+            let (xs, ys): (Vec<u32>, Vec<u32>) = changed.iter().copied().unzip();
+            let (left, top) = (*xs.iter().min().unwrap(), *ys.iter().min().unwrap());
+            Rect {
+                left,
+                top,
+                width: xs.iter().max().unwrap() + 1 - left,
+                height: ys.iter().max().unwrap() + 1 - top,
+            }
+        });
+        let actual = changed_rect(&before, &after);
+        assert_eq!(actual, expected, "case {case}, {width}x{height}");
+    }
+}
+
+#[test]
 fn the_encoder_queue_is_bounded_in_frames_and_pixels_for_any_canvas() {
     for (width, height) in [(1, 1), (320, 240), (1920, 1080), (8192, 8192)] {
         let frames = queue_frames(width, height);

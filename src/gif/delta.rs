@@ -85,20 +85,32 @@ pub fn changed_rect(previous: &IndexedFrame, current: &IndexedFrame) -> Option<R
     })
 }
 
-/// Where `a` and `b` first differ. One memcmp answers the common case, that they do not.
+/// Where `a` and `b` first differ. One memcmp answers the common case, that they do not;
+/// otherwise whole 16-byte blocks are skipped before looking byte by byte.
 fn first_difference(a: &[u8], b: &[u8]) -> Option<usize> {
     if a == b {
         return None;
     }
-    a.iter().zip(b).position(|(x, y)| x != y)
+    let (a_blocks, b_blocks) = (a.as_chunks::<16>().0, b.as_chunks::<16>().0);
+    let same = a_blocks.iter().zip(b_blocks).take_while(|(x, y)| x == y);
+    let skip = 16 * same.count();
+    let mut rest = a[skip..].iter().zip(&b[skip..]);
+    rest.position(|(x, y)| x != y).map(|at| skip + at)
 }
 
-/// Where `a` and `b` last differ.
+/// Where `a` and `b` last differ (likewise, from the end).
 fn last_difference(a: &[u8], b: &[u8]) -> Option<usize> {
     if a == b {
         return None;
     }
-    a.iter().zip(b).rposition(|(x, y)| x != y)
+    let (a_blocks, b_blocks) = (a.as_rchunks::<16>().1, b.as_rchunks::<16>().1);
+    let same = a_blocks
+        .iter()
+        .zip(b_blocks)
+        .rev()
+        .take_while(|(x, y)| x == y);
+    let end = a.len() - 16 * same.count();
+    a[..end].iter().zip(&b[..end]).rposition(|(x, y)| x != y)
 }
 
 /// Copies `rect` of `frame` into `out` (cleared first), row after row.

@@ -332,7 +332,8 @@ impl<'a> BitPacker<'a> {
         self.pending |= u64::from(code) << self.pending_bits;
         self.pending_bits += width;
         if self.pending_bits >= 32 {
-            self.out.extend_from_slice(&(self.pending as u32).to_le_bytes());
+            self.out
+                .extend_from_slice(&(self.pending as u32).to_le_bytes());
             self.pending >>= 32;
             self.pending_bits -= 32;
         }
