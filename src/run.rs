@@ -237,6 +237,13 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         progress.frames_done(n + 1);
     }
     drop(progress);
+    // The last frames are encoded while the still is written.
+    gif.send_queued().map_err(&gif_error)?;
+    let mut png_out = BufWriter::new(png_file.file());
+    write_png(&mut png_out, &frame, renderer.palette())
+        .and_then(|()| png_out.flush())
+        .map_err(OutputError::at(&outputs.png))?;
+    drop(png_out);
     gif.finish()
         .and_then(|mut out| out.flush())
         .map_err(&gif_error)?;
@@ -244,11 +251,6 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         out.flush().map_err(OutputError::at(trace_path))?;
     }
     drop(trace_out);
-    let mut png_out = BufWriter::new(png_file.file());
-    write_png(&mut png_out, &frame, renderer.palette())
-        .and_then(|()| png_out.flush())
-        .map_err(OutputError::at(&outputs.png))?;
-    drop(png_out);
     if let (Some(plot), Some(file), Some(path)) = (plot, &mut plot_file, outputs.plot.as_deref()) {
         plot.write(file.file()).map_err(OutputError::at(path))?;
     }

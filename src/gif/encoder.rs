@@ -5,15 +5,18 @@
 //! frame, each frame is only the rectangle that changed ([`super::delta`]), laid over the
 //! last one (disposal Keep), written in whichever of a few encodings is smallest
 //! ([`super::cheapest`]). A frame identical to the one before is not written at all: the one
-//! before is shown that much longer (its delay grows), as `gifsicle -O` does. Frames wait in a queue of bounded size; a full queue goes to a
-//! background thread that encodes it on every core at once (rayon) while the caller draws
-//! and queues the next frames, and comes back to be written in order. Two queues take turns,
+//! before is shown that much longer (its delay grows), as `gifsicle -O` does.
+//!
+//! Frames wait in a queue of bounded size. The queue goes to a background thread when it is
+//! full, or earlier when that thread is free and there is a frame for each core; the thread
+//! encodes it on every core at once (rayon) while the caller draws and queues the next
+//! frames, and it comes back to be written in order. Two queues take turns,
 //! so memory stays flat however many frames a run has, and their buffers serve the whole run.
 
 use std::borrow::Cow;
 use std::io::{self, Write};
 use std::mem::take;
-use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
+use std::sync::mpsc::{sync_channel, Receiver, SyncSender, TryRecvError};
 use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};
@@ -56,6 +59,8 @@ pub struct GifWriter<W: Write> {
     spare: Option<Batch>,
     /// Whether a batch is with the encoding thread now.
     in_flight: bool,
+    /// How many coders encode a batch at once (one per core).
+    cores: usize,
     to_encoder: SyncSender<Batch>,
     from_encoder: Receiver<Batch>,
     timings: EncodeTimings,
@@ -173,9 +178,8 @@ impl<W: Write> GifWriter<W> {
             table_len: palette.colours().len().next_power_of_two().max(2),
             ..Batch::default()
         };
-        let coders = (0..rayon::current_num_threads().min(frames))
-            .map(|_| Coder::default())
-            .collect();
+        let cores = rayon::current_num_threads().min(frames);
+        let coders = (0..cores).map(|_| Coder::default()).collect();
         let (to_encoder, batches) = sync_channel(1);
         let (done, from_encoder) = sync_channel(1);
         thread::Builder::new()
@@ -191,6 +195,7 @@ impl<W: Write> GifWriter<W> {
             filling: batch(coders),
             spare: Some(batch(Vec::new())),
             in_flight: false,
+            cores,
             to_encoder,
             from_encoder,
             timings: EncodeTimings::default(),
@@ -238,10 +243,28 @@ impl<W: Write> GifWriter<W> {
         crop(frame, slot.rect, &mut slot.pixels);
         self.filling.queued += 1;
         self.timings.changes += started.elapsed();
-        if self.filling.queued == self.filling.frames.len() {
+        // A batch goes as soon as it is full, or as soon as the encoder is free and there is
+        // a frame for each core: no core waits for a batch to fill.
+        let full = self.filling.queued == self.filling.frames.len();
+        if full || (self.filling.queued >= self.cores && self.encoder_free()?) {
             self.hand_over()?;
         }
         Ok(())
+    }
+
+    /// Whether no batch is being encoded now (writing the one that just came back, if any).
+    fn encoder_free(&mut self) -> io::Result<bool> {
+        if !self.in_flight {
+            return Ok(true);
+        }
+        match self.from_encoder.try_recv() {
+            Ok(batch) => {
+                self.write_batch(batch)?;
+                Ok(true)
+            }
+            Err(TryRecvError::Empty) => Ok(false),
+            Err(TryRecvError::Disconnected) => Err(encoder_gone()),
+        }
     }
 
     /// Adds one frame's time to the last frame queued, if its delay has room (and frames
@@ -277,13 +300,18 @@ impl<W: Write> GifWriter<W> {
         Ok(())
     }
 
-    /// Waits for the batch being encoded, if any, writes its frames in order, and keeps its
-    /// frames as the spare batch and its coders for the next.
+    /// Waits for the batch being encoded, if any, and writes it.
     fn collect(&mut self) -> io::Result<()> {
         if !self.in_flight {
             return Ok(());
         }
-        let mut batch = self.from_encoder.recv().map_err(|_| encoder_gone())?;
+        let batch = self.from_encoder.recv().map_err(|_| encoder_gone())?;
+        self.write_batch(batch)
+    }
+
+    /// Writes an encoded batch's frames in order, and keeps its frames as the spare batch and
+    /// its coders for the next.
+    fn write_batch(&mut self, mut batch: Batch) -> io::Result<()> {
         self.in_flight = false;
         let started = Instant::now();
         let last = batch.queued - 1;
@@ -315,6 +343,15 @@ impl<W: Write> GifWriter<W> {
         self.filling.coders = take(&mut batch.coders);
         batch.queued = 0;
         self.spare = Some(batch);
+        Ok(())
+    }
+
+    /// Sends every frame queued so far to be encoded, without waiting for it (only for the
+    /// batch before it, if any), so the caller can do other work in the meantime.
+    pub fn send_queued(&mut self) -> io::Result<()> {
+        if self.filling.queued > 0 {
+            self.hand_over()?;
+        }
         Ok(())
     }
 
