@@ -92,18 +92,38 @@ impl Queue {
         self.counts[ball] = self.counts[ball].wrapping_add(1);
     }
 
-    /// The earliest event that is not stale, if any is left.
-    pub fn pop(&mut self) -> Option<Event> {
-        while let Some(event) = self.heap.pop() {
-            let partner = match event.what {
-                What::Ball(other) => self.counts[other as usize],
-                _ => 0,
-            };
-            if event.counts == [self.counts[event.ball as usize], partner] {
-                return Some(event);
+    /// Whether `event` was predicted before one of its balls changed course.
+    fn stale(&self, event: &Event) -> bool {
+        let partner = match event.what {
+            What::Ball(other) => self.counts[other as usize],
+            _ => 0,
+        };
+        event.counts != [self.counts[event.ball as usize], partner]
+    }
+
+    /// The earliest event that is not stale, if it comes no later than `end`.
+    pub fn pop_until(&mut self, end: f64) -> Option<Event> {
+        while let Some(event) = self.heap.peek() {
+            if self.stale(event) {
+                self.heap.pop();
+            } else if event.time <= end {
+                return self.heap.pop();
+            } else {
+                return None;
             }
         }
         None
+    }
+
+    /// Carries the events still to come over to the next step, which starts `dt` frames
+    /// later: their times move back by `dt`, and stale events are dropped on the way.
+    pub fn carry_over(&mut self, dt: f64) {
+        let mut events = std::mem::take(&mut self.heap).into_vec();
+        events.retain(|event| !self.stale(event));
+        for event in &mut events {
+            event.time -= dt;
+        }
+        self.heap = BinaryHeap::from(events);
     }
 }
 
@@ -133,11 +153,34 @@ mod tests {
             },
         );
         queue.changed(1); // ball 1 changed course: the event at 0.5 is stale
-        let times: Vec<f64> = std::iter::from_fn(|| queue.pop()).map(|e| e.time).collect();
+        let times: Vec<f64> = std::iter::from_fn(|| queue.pop_until(1.0))
+            .map(|e| e.time)
+            .collect();
         assert_eq!(
             times,
             vec![0.25, 0.75],
             "expected 0.25 then 0.75, got {times:?}"
+        );
+    }
+
+    #[test]
+    fn events_carried_into_the_next_step_move_back_by_its_length_without_the_stale_ones() {
+        let mut queue = Queue::default();
+        queue.reset(2);
+        queue.push(1.5, 0, What::Contact);
+        queue.push(1.25, 1, What::Contact);
+        queue.changed(1);
+        assert!(
+            queue.pop_until(1.0).is_none(),
+            "nothing is due within the step"
+        );
+        queue.carry_over(1.0);
+        assert_eq!(queue.heap.len(), 1, "the stale event is dropped");
+        let next = queue.pop_until(1.0).map(|e| e.time);
+        assert_eq!(
+            next,
+            Some(0.5),
+            "expected the event at 1.5 to come at 0.5, got {next:?}"
         );
     }
 }

@@ -60,6 +60,8 @@ pub struct EventCounts {
     pub events: u64,
     /// Of those, bounces between two balls.
     pub ball_collisions: u64,
+    /// Of those, bounces off (or coming to rest on) a wall, a floor's face or a floor's end.
+    pub contacts: u64,
     /// The most events any single step of the frame resolved.
     pub most_in_a_step: u64,
     /// Steps that hit the cap and dropped the rest of their time.
@@ -86,6 +88,9 @@ pub struct EventDriven {
     last_collision: Vec<f64>,
     /// Frames since the first step, at the start of this step.
     elapsed: f64,
+    /// Whether the calendar, the grid and the clocks carry over into the next step, so that
+    /// it need not predict every ball's events afresh (see `EventDriven::step`).
+    carried: bool,
     counts: EventCounts,
 }
 
@@ -94,6 +99,21 @@ struct Step<'a> {
     integrator: Integrator,
     forces: &'a Forces,
     effects: &'a Effects,
+    /// How far ahead events are predicted, frames since the step's start.
+    horizon: f64,
+}
+
+/// Which neighbours a prediction looks at.
+#[derive(Clone, Copy)]
+enum Scan {
+    /// Every ball in the neighbouring cells.
+    All,
+    /// Only those after the ball in scene order, so that each pair is predicted once when
+    /// every ball is predicted in turn.
+    Later,
+    /// Only those in the cells that just became neighbours when the ball moved one cell along
+    /// `axis` towards `towards`.
+    Entered { axis: u8, towards: i8 },
 }
 
 impl EventDriven {
@@ -110,6 +130,7 @@ impl EventDriven {
             held: Vec::new(),
             last_collision: Vec::new(),
             elapsed: 0.0,
+            carried: false,
             counts: EventCounts::default(),
         }
     }
@@ -136,6 +157,13 @@ impl EventDriven {
     }
 
     /// Advances `balls` by one step of `forces.dt` frames, every contact at its moment.
+    ///
+    /// Without gravity and drag every flight is a straight line that nothing bends between
+    /// steps, so a prediction stays true past the step's end: events are then predicted
+    /// without a horizon, and the calendar, the grid and the clocks carry over into the next
+    /// step, where the end of a step is only a stop to draw the frame (event-driven molecular
+    /// dynamics runs this way). Anything else (gravity's kicks, drag, a capped step, a ball
+    /// that left the area the grid was laid over) starts the next step afresh.
     fn step(
         &mut self,
         balls: &mut [Ball],
@@ -143,16 +171,20 @@ impl EventDriven {
         forces: &Forces,
         effects: &Effects,
     ) {
+        let straight = forces.gravity.is_none() && forces.drag.is_none();
         let step = Step {
             integrator,
             forces,
             effects,
+            horizon: if straight { f64::INFINITY } else { forces.dt },
         };
-        self.start(balls, &step);
+        if !self.carried {
+            self.start(balls, &step);
+        }
         let cap = MAX_EVENTS_PER_BALL * balls.len() as u64;
         let mut events = 0;
         let mut end = forces.dt;
-        while let Some(event) = self.queue.pop() {
+        while let Some(event) = self.queue.pop_until(forces.dt) {
             if events == cap {
                 end = event.time; // no clock is later: events come out in time order
                 self.counts.capped_steps += 1;
@@ -169,28 +201,32 @@ impl EventDriven {
                     self.counts.ball_collisions += 1;
                     self.queue.changed(i);
                     self.queue.changed(j);
-                    self.predict(balls, i, &step, false);
-                    self.predict(balls, j, &step, false);
+                    self.predict(balls, i, &step, Scan::All);
+                    self.predict(balls, j, &step, Scan::All);
                 }
                 What::Contact => {
                     if let Some(contact) = self.contact[i] {
                         contact.bounce(&mut balls[i], forces);
+                        self.counts.contacts += 1;
                     }
                     self.flight[i] = Bounds::of(&balls[i], effects).supported(&balls[i], forces);
                     self.held[i] = self.flight[i] != *forces;
                     self.queue.changed(i);
-                    self.predict(balls, i, &step, false);
+                    self.predict(balls, i, &step, Scan::All);
                 }
                 What::Cell { axis, towards } => {
+                    // The ball keeps its course, so its other events stand: only the next
+                    // cell exit and the balls that just became neighbours are new.
                     self.cells.shift(i, axis, towards);
-                    self.queue.changed(i);
-                    self.predict(balls, i, &step, false);
+                    self.predict(balls, i, &step, Scan::Entered { axis, towards });
                 }
             }
         }
         let unused = forces.dt - end;
+        let mut covered = true;
         for (i, ball) in balls.iter_mut().enumerate() {
             self.fly(ball, i, end, &step);
+            covered &= self.cells.covers(ball);
             let flight = Forces {
                 dt: end,
                 ..self.flight[i]
@@ -203,6 +239,11 @@ impl EventDriven {
                 ball.vy -= g[1] * unused;
             }
         }
+        self.carried = straight && unused == 0.0 && covered;
+        if self.carried {
+            self.queue.carry_over(forces.dt);
+            self.clock.fill(0.0);
+        }
         self.elapsed += forces.dt;
         self.counts.events += events;
         self.counts.most_in_a_step = self.counts.most_in_a_step.max(events);
@@ -214,7 +255,8 @@ impl EventDriven {
         for ball in balls.iter_mut() {
             exact::put_back(ball, step.effects);
         }
-        self.cells.rebuild(balls);
+        let area = step.effects.walls.as_ref().map(|w| [w.width, w.height]);
+        self.cells.rebuild(balls, area);
         self.queue.reset(balls.len());
         self.clock.clear();
         self.clock.resize(balls.len(), 0.0);
@@ -238,7 +280,7 @@ impl EventDriven {
             step.integrator.kick_before(ball, &self.flight[i]);
         }
         for i in 0..balls.len() {
-            self.predict(balls, i, step, true);
+            self.predict(balls, i, step, Scan::Later);
         }
     }
 
@@ -281,21 +323,24 @@ impl EventDriven {
         }
     }
 
-    /// Predicts the next events of ball `i` (whose clock is now): contacts with walls and
-    /// floors, leaving its cell, and touching each ball in the neighbouring cells (at the
-    /// start of the step only those after it, so each pair is predicted once).
-    fn predict(&mut self, balls: &[Ball], i: usize, step: &Step, starting: bool) {
+    /// Predicts the next events of ball `i` (whose clock is now) up to the step's horizon:
+    /// contacts with walls and floors, leaving its cell, and touching each ball `scan` picks
+    /// in the neighbouring cells. A ball that only entered a new cell keeps its course, so its
+    /// contact with walls and floors stands and is not predicted again.
+    fn predict(&mut self, balls: &[Ball], i: usize, step: &Step, scan: Scan) {
         let now = self.clock[i];
-        let left = step.forces.dt - now;
+        let left = step.horizon - now;
         let ball = &balls[i];
         let path = step.integrator.path(ball, &self.flight[i]);
-        let bounds = Bounds::of(ball, step.effects);
-        self.contact[i] = bounds
-            .first_contact(ball, &path, left)
-            .map(|(time, contact)| {
-                self.queue.push(now + time, i, What::Contact);
-                contact
-            });
+        if !matches!(scan, Scan::Entered { .. }) {
+            let bounds = Bounds::of(ball, step.effects);
+            self.contact[i] = bounds
+                .first_contact(ball, &path, left)
+                .map(|(time, contact)| {
+                    self.queue.push(now + time, i, What::Contact);
+                    contact
+                });
+        }
         if let Some((time, axis, towards)) = self.cells.exit(i, &path, left) {
             self.queue.push(now + time, i, What::Cell { axis, towards });
         }
@@ -309,8 +354,8 @@ impl EventDriven {
             ) || (forces.gravity.is_none() && forces.drag.is_none())
         };
         let mine_straight = straight(&flight[i]);
-        cells.neighbours(i, |j| {
-            if j == i || (starting && j < i) {
+        let mut visit = |j: usize| {
+            if j == i || (matches!(scan, Scan::Later) && j < i) {
                 return;
             }
             let other = &balls[j];
@@ -336,7 +381,11 @@ impl EventDriven {
             if let Some(time) = touch {
                 queue.push(now + time, i, What::Ball(j as u32));
             }
-        });
+        };
+        match scan {
+            Scan::All | Scan::Later => cells.neighbours(i, &mut visit),
+            Scan::Entered { axis, towards } => cells.new_neighbours(i, axis, towards, &mut visit),
+        }
     }
 
     /// Bounces balls `i` and `j`, which touch now, along the line through their centres.
