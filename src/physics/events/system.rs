@@ -12,8 +12,8 @@
 //! `u` becomes `−e·u`.
 //!
 //! **Inelastic collapse.** With `e < 1`, balls can collide infinitely often in finite time
-//! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. Two rules,
-//! the same as for walls (`super::super::exact`), make every step finish:
+//! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. The rules below,
+//! the first as for walls (`super::super::exact`), make every step finish and a pile rest:
 //! - **Rest rule.** At the start of each step a ball that touches, without normal speed, a
 //!   wall, a floor or a ball that is itself held, and that gravity presses onto it, is *held*:
 //!   that part of gravity is removed from its step, as the wall's rest rule does. A collision
@@ -21,7 +21,13 @@
 //!   gravity presses onto a held ball, ends with the falling ball at rest on the held one, as
 //!   on a wall (the held ball is not pushed: what holds it takes the impulse). Without this a
 //!   ball landing on a resting pile would bounce between pile and ball in ever smaller steps,
-//!   without end. A settled pile has no events at all.
+//!   without end.
+//! - **Sleep rule** (DynamO's sleeping particles, Bannerman, Strobl & Pöschel): at the start
+//!   of each step, a ball no faster than gravity makes it in one step that walls, floors and
+//!   sleeping balls within 1 % of its radius hold up completely (no slope left to slide down:
+//!   straight up points between their normals) sleeps: it stops, and for the step it is a
+//!   fixed obstacle. Struck so hard that the rebound reaches `exact::REST_SPEED`, it wakes
+//!   and collides as usual. A settled pile sleeps whole and has no events at all.
 //! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
 //!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
 //!   ball's previous collision is elastic, so a cascade of collisions at one moment ends.
@@ -52,6 +58,9 @@ pub const TC_DURATION: f64 = 1e-6;
 
 /// Gaps between balls below this share of their radii count as touching, for the rest rule.
 const TOUCH_GAP: f64 = 1e-9;
+
+/// The sleep rule's gap: a ball within this share of its radius of a support leans on it.
+const SLEEP_GAP: f64 = 0.01;
 
 /// What the event-driven steps of the last frame did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -84,6 +93,8 @@ pub struct EventDriven {
     support: Vec<Support>,
     /// Per ball: whether something holds it up (part of gravity removed).
     held: Vec<bool>,
+    /// Per ball: whether it sleeps this step (the sleep rule).
+    asleep: Vec<bool>,
     /// Per ball: when it last collided with another ball, frames since the first step.
     last_collision: Vec<f64>,
     /// Frames since the first step, at the start of this step.
@@ -128,6 +139,7 @@ impl EventDriven {
             contact: Vec::new(),
             support: Vec::new(),
             held: Vec::new(),
+            asleep: Vec::new(),
             last_collision: Vec::new(),
             elapsed: 0.0,
             carried: false,
@@ -270,17 +282,75 @@ impl EventDriven {
         );
         self.held.clear();
         self.held.resize(balls.len(), false);
+        self.asleep.clear();
+        self.asleep.resize(balls.len(), false);
         self.last_collision.resize(balls.len(), f64::NEG_INFINITY);
         if step.forces.gravity.is_some() {
+            self.find_asleep(balls, step);
             self.find_held(balls, step.forces);
         }
         self.flight.clear();
         for (i, ball) in balls.iter_mut().enumerate() {
-            self.flight.push(self.support[i].hold(step.forces));
+            let flight = if self.asleep[i] {
+                Forces {
+                    gravity: None,
+                    ..*step.forces
+                }
+            } else {
+                self.support[i].hold(step.forces)
+            };
+            self.flight.push(flight);
             step.integrator.kick_before(ball, &self.flight[i]);
         }
         for i in 0..balls.len() {
             self.predict(balls, i, step, Scan::Later);
+        }
+    }
+
+    /// The sleep rule (after DynamO's sleeping particles, Bannerman et al.), from the bottom
+    /// of a pile up: a ball no faster than gravity makes it in one step, held up completely
+    /// (no slope left to slide down) by walls, floors and sleeping balls within [`SLEEP_GAP`]
+    /// of it, sleeps this step: it stops and stays put. Each step decides afresh, so a ball
+    /// whose support wakes or moves away falls again.
+    fn find_asleep(&mut self, balls: &mut [Ball], step: &Step) {
+        let forces = step.forces;
+        let Some(g) = forces.gravity else {
+            return;
+        };
+        let sleep_speed = g[0].hypot(g[1]) * forces.dt;
+        let slow = |ball: &Ball| ball.vx.hypot(ball.vy) <= sleep_speed;
+        let mut candidates: Vec<usize> = (0..balls.len()).filter(|&i| slow(&balls[i])).collect();
+        // Lowest first (furthest along gravity), so a pile is settled in one pass or few.
+        let depth = |i: usize| dot(g, [balls[i].x, balls[i].y]);
+        candidates.sort_by(|&a, &b| depth(b).total_cmp(&depth(a)));
+        let mut changed = true;
+        while changed {
+            changed = false;
+            for &i in &candidates {
+                if self.asleep[i] {
+                    continue;
+                }
+                let ball = &balls[i];
+                let mut support = Bounds::of(ball, step.effects).near(ball, SLEEP_GAP);
+                let asleep = &self.asleep;
+                self.cells.neighbours(i, |j| {
+                    if j != i && asleep[j] {
+                        if let Some(n) = leaning_on(ball, &balls[j], SLEEP_GAP) {
+                            support.push(n);
+                        }
+                    }
+                });
+                if support.hold_completely(g) {
+                    self.asleep[i] = true;
+                    changed = true;
+                }
+            }
+        }
+        for (i, ball) in balls.iter_mut().enumerate() {
+            if self.asleep[i] {
+                (ball.vx, ball.vy) = (0.0, 0.0);
+                self.held[i] = true;
+            }
         }
     }
 
@@ -418,6 +488,15 @@ impl EventDriven {
         } else {
             self.restitution
         };
+        // A sleeping ball struck hard enough to rebound at the rest speed wakes (and falls
+        // again); struck softer it stays put, as a wall would.
+        for k in [i, j] {
+            if self.asleep[k] && -e * approach >= REST_SPEED {
+                self.asleep[k] = false;
+                self.held[k] = false;
+                self.flight[k] = *forces;
+            }
+        }
         if e < 1.0 && -e * approach < REST_SPEED {
             let resting = if self.held[i] && exact::pressed(forces, n) {
                 Some((i, j, n))
@@ -440,7 +519,11 @@ impl EventDriven {
         let (mass_a, mass_b) = (a.radius * a.radius, b.radius * b.radius);
         let total = mass_a + mass_b;
         let change = (1.0 + e) * approach;
-        let (kick_a, kick_b) = (change * mass_b / total, change * mass_a / total);
+        let (kick_a, kick_b) = match (self.asleep[i], self.asleep[j]) {
+            (true, _) => (0.0, change),
+            (_, true) => (change, 0.0),
+            _ => (change * mass_b / total, change * mass_a / total),
+        };
         let a = &mut balls[i];
         a.vx += kick_a * n[0];
         a.vy += kick_a * n[1];
@@ -453,13 +536,19 @@ impl EventDriven {
 /// The normal (from `below` to `ball`) of the contact `ball` rests on `below` through, if it
 /// touches it with no normal speed between them and gravity presses it on.
 fn resting_on(ball: &Ball, below: &Ball, forces: &Forces) -> Option<[f64; 2]> {
+    let n = leaning_on(ball, below, TOUCH_GAP)?;
+    let still = dot([ball.vx - below.vx, ball.vy - below.vy], n).abs() <= TOUCH_SPEED;
+    (still && exact::pressed(forces, n)).then_some(n)
+}
+
+/// The normal (from `below` to `ball`) if the gap between them is at most `gap` of their
+/// radii.
+fn leaning_on(ball: &Ball, below: &Ball, gap: f64) -> Option<[f64; 2]> {
     let offset = [ball.x - below.x, ball.y - below.y];
     let distance = offset[0].hypot(offset[1]);
     let reach = ball.radius + below.radius;
-    if distance == 0.0 || distance - reach > TOUCH_GAP * reach {
+    if distance == 0.0 || distance - reach > gap * reach {
         return None;
     }
-    let n = [offset[0] / distance, offset[1] / distance];
-    let still = dot([ball.vx - below.vx, ball.vy - below.vy], n).abs() <= TOUCH_SPEED;
-    (still && exact::pressed(forces, n)).then_some(n)
+    Some([offset[0] / distance, offset[1] / distance])
 }
