@@ -132,22 +132,6 @@ impl Cells {
         self.visit_cells(around, visit);
     }
 
-    /// Calls `visit` with every ball in the (up to three) cells that became ball `i`'s
-    /// neighbours when it moved one cell along `axis` towards `towards` (`Cells::shift`).
-    pub fn new_neighbours(&self, i: usize, axis: u8, towards: i8, visit: impl FnMut(usize)) {
-        let a = usize::from(axis);
-        let counts = [self.columns, self.rows];
-        let Some(beyond) = self.at[i][a]
-            .checked_add_signed(isize::from(towards))
-            .filter(|&beyond| beyond < counts[a])
-        else {
-            return; // the ball is in the grid's outermost row or column: nothing beyond it
-        };
-        let mut cells = [0, 1].map(|b| around(self.at[i][b], counts[b]));
-        cells[a] = beyond..=beyond;
-        self.visit_cells(cells, visit);
-    }
-
     /// Calls `visit` with every ball in the cells of the given column and row ranges.
     fn visit_cells(
         &self,

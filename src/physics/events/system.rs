@@ -114,19 +114,6 @@ struct Step<'a> {
     horizon: f64,
 }
 
-/// Which neighbours a prediction looks at.
-#[derive(Clone, Copy)]
-enum Scan {
-    /// Every ball in the neighbouring cells.
-    All,
-    /// Only those after the ball in scene order, so that each pair is predicted once when
-    /// every ball is predicted in turn.
-    Later,
-    /// Only those in the cells that just became neighbours when the ball moved one cell along
-    /// `axis` towards `towards`.
-    Entered { axis: u8, towards: i8 },
-}
-
 impl EventDriven {
     /// Exact contacts that keep `restitution` of the approach speed.
     pub fn new(restitution: f64) -> EventDriven {
@@ -196,16 +183,24 @@ impl EventDriven {
         let cap = MAX_EVENTS_PER_BALL * balls.len() as u64;
         let mut events = 0;
         let mut end = forces.dt;
-        while let Some(event) = self.queue.pop_until(forces.dt) {
+        // Every branch predicts the ball again, which replaces its event in the calendar.
+        while let Some((i, event, current)) = self.queue.earliest(forces.dt) {
+            let now = event.time;
+            if !current {
+                // Its partner changed course since: predict the ball again from here.
+                self.fly(&mut balls[i], i, now, &step);
+                self.predict(balls, i, &step);
+                continue;
+            }
             if events == cap {
-                end = event.time; // no clock is later: events come out in time order
+                end = now; // no clock is later: events come out in time order
                 self.counts.capped_steps += 1;
                 break;
             }
             events += 1;
-            let (i, now) = (event.ball as usize, event.time);
             self.fly(&mut balls[i], i, now, &step);
             match event.what {
+                What::Nothing => {}
                 What::Ball(j) => {
                     let j = j as usize;
                     self.fly(&mut balls[j], j, now, &step);
@@ -213,8 +208,8 @@ impl EventDriven {
                     self.counts.ball_collisions += 1;
                     self.queue.changed(i);
                     self.queue.changed(j);
-                    self.predict(balls, i, &step, Scan::All);
-                    self.predict(balls, j, &step, Scan::All);
+                    self.predict(balls, i, &step);
+                    self.predict(balls, j, &step);
                 }
                 What::Contact => {
                     if let Some(contact) = self.contact[i] {
@@ -224,13 +219,12 @@ impl EventDriven {
                     self.flight[i] = Bounds::of(&balls[i], effects).supported(&balls[i], forces);
                     self.held[i] = self.flight[i] != *forces;
                     self.queue.changed(i);
-                    self.predict(balls, i, &step, Scan::All);
+                    self.predict(balls, i, &step);
                 }
                 What::Cell { axis, towards } => {
-                    // The ball keeps its course, so its other events stand: only the next
-                    // cell exit and the balls that just became neighbours are new.
+                    // The ball keeps its course, so events other balls predicted with it stand.
                     self.cells.shift(i, axis, towards);
-                    self.predict(balls, i, &step, Scan::Entered { axis, towards });
+                    self.predict(balls, i, &step);
                 }
             }
         }
@@ -303,7 +297,7 @@ impl EventDriven {
             step.integrator.kick_before(ball, &self.flight[i]);
         }
         for i in 0..balls.len() {
-            self.predict(balls, i, step, Scan::Later);
+            self.predict(balls, i, step);
         }
     }
 
@@ -393,28 +387,18 @@ impl EventDriven {
         }
     }
 
-    /// Predicts the next events of ball `i` (whose clock is now) up to the step's horizon:
-    /// contacts with walls and floors, leaving its cell, and touching each ball `scan` picks
-    /// in the neighbouring cells. A ball that only entered a new cell keeps its course, so its
-    /// contact with walls and floors stands and is not predicted again.
-    fn predict(&mut self, balls: &[Ball], i: usize, step: &Step, scan: Scan) {
+    /// Predicts the next event of ball `i` (whose clock is now) up to the step's horizon: the
+    /// earliest of its contacts with walls and floors, leaving its cell, and touching each ball
+    /// in the neighbouring cells.
+    fn predict(&mut self, balls: &[Ball], i: usize, step: &Step) {
         let now = self.clock[i];
-        let left = step.horizon - now;
         let ball = &balls[i];
         let path = step.integrator.path(ball, &self.flight[i]);
-        if !matches!(scan, Scan::Entered { .. }) {
-            let bounds = Bounds::of(ball, step.effects);
-            self.contact[i] = bounds
-                .first_contact(ball, &path, left)
-                .map(|(time, contact)| {
-                    self.queue.push(now + time, i, What::Contact);
-                    contact
-                });
+        // The earliest so far, as time from now; later candidates are not looked for.
+        let mut first = (step.horizon - now, What::Nothing);
+        if let Some((time, axis, towards)) = self.cells.exit(i, &path, first.0) {
+            first = (time, What::Cell { axis, towards });
         }
-        if let Some((time, axis, towards)) = self.cells.exit(i, &path, left) {
-            self.queue.push(now + time, i, What::Cell { axis, towards });
-        }
-        let (queue, cells) = (&mut self.queue, &self.cells);
         let (clock, flight) = (&self.clock, &self.flight);
         // Straight flights (the Euler methods, or nothing to curve them) need no polynomials.
         let straight = |forces: &Forces| {
@@ -424,8 +408,8 @@ impl EventDriven {
             ) || (forces.gravity.is_none() && forces.drag.is_none())
         };
         let mine_straight = straight(&flight[i]);
-        let mut visit = |j: usize| {
-            if j == i || (matches!(scan, Scan::Later) && j < i) {
+        self.cells.neighbours(i, |j| {
+            if j == i {
                 return;
             }
             let other = &balls[j];
@@ -437,7 +421,7 @@ impl EventDriven {
                     other.y + other.vy * behind - ball.y,
                 ];
                 let velocity = [other.vx - ball.vx, other.vy - ball.vy];
-                toi::straight(offset, velocity, reach, left)
+                toi::straight(offset, velocity, reach, first.0)
             } else {
                 // The other ball as it will be now, so both flights start at the same moment.
                 let mut there = Ball::new(other.x, other.y, other.vx, other.vy, other.radius, 0);
@@ -446,16 +430,28 @@ impl EventDriven {
                 }
                 let theirs = step.integrator.path(&there, &flight[j]);
                 let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis].minus_poly(&path[axis]));
-                toi::first_touch(&relative, reach, left)
+                toi::first_touch(&relative, reach, first.0)
             };
-            if let Some(time) = touch {
-                queue.push(now + time, i, What::Ball(j as u32));
+            if let Some(time) = touch.filter(|&time| time < first.0) {
+                first = (time, What::Ball(j as u32));
             }
+        });
+        // Walls and floors last: with the horizon cut short, far ones are skipped unsolved.
+        let bounds = Bounds::of(ball, step.effects);
+        self.contact[i] = bounds
+            .first_contact(ball, &path, first.0)
+            .filter(|&(time, _)| time < first.0 || first.1 == What::Nothing)
+            .map(|(time, contact)| {
+                first = (time, What::Contact);
+                contact
+            });
+        let (time, what) = first;
+        let time = if what == What::Nothing {
+            f64::INFINITY
+        } else {
+            now + time
         };
-        match scan {
-            Scan::All | Scan::Later => cells.neighbours(i, &mut visit),
-            Scan::Entered { axis, towards } => cells.new_neighbours(i, axis, towards, &mut visit),
-        }
+        self.queue.set(i, time, what);
     }
 
     /// Bounces balls `i` and `j`, which touch now, along the line through their centres.
