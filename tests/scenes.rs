@@ -62,6 +62,30 @@ fn the_same_seed_spawns_the_same_balls_and_another_seed_other_balls() {
 }
 
 #[test]
+fn spawned_balls_that_collide_never_overlap_when_they_fit_side_by_side() {
+    let scenes = ["billiards", "pile"]
+        .into_iter()
+        .flat_map(|name| (1..=20).map(move |seed| (name, scene_file::preset(name, seed))));
+    for (name, scene) in scenes {
+        let balls = scene.expect("a valid scene").balls;
+        for (i, a) in balls.iter().enumerate() {
+            for b in &balls[i + 1..] {
+                let gap = (b.x - a.x).hypot(b.y - a.y) - (a.radius + b.radius);
+                assert!(
+                    gap > -1e-9 * a.radius,
+                    "{name}: balls at ({}, {}) and ({}, {}) overlap by {} px, expected none",
+                    a.x,
+                    a.y,
+                    b.x,
+                    b.y,
+                    -gap
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn overrides_replace_only_the_values_given() {
     let mut scene = scene_file::preset("moon", 1).unwrap();
     let moon = scene.clone();

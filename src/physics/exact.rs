@@ -190,6 +190,26 @@ impl Support {
         self.len += 1;
     }
 
+    /// Whether these surfaces hold a ball up completely against gravity `g`, leaving it no
+    /// slope to slide down: "up" (against `g`) points along one of the surfaces' normals, or
+    /// between two of them (a wall beside the ball counts: it stops a slide towards it).
+    pub fn hold_completely(&self, g: [f64; 2]) -> bool {
+        if self.len > Self::MAX {
+            return true;
+        }
+        let up = [-g[0], -g[1]];
+        let (mut left, mut right) = (false, false);
+        for n in self.normals[..self.len]
+            .iter()
+            .filter(|&&n| dot(n, up) >= 0.0)
+        {
+            let side = n[0] * up[1] - n[1] * up[0];
+            left |= side >= 0.0;
+            right |= side <= 0.0;
+        }
+        left && right
+    }
+
     /// `forces` with gravity's push into every surface removed. On one surface gravity keeps
     /// its tangential part (a ball rests on a slope by sliding down it); if what is left still
     /// presses into another surface, the ball is wedged and held completely.
@@ -288,6 +308,23 @@ impl<'a> Bounds<'a> {
         support
     }
 
+    /// The walls and floor faces within `gap` (a share of the radius) of `ball`, whatever its
+    /// speed: what may hold up a ball that sleeps (`super::events::system`).
+    pub fn near(&self, ball: &Ball, gap: f64) -> Support {
+        let mut support = Support::default();
+        for side in self.sides.iter().flatten() {
+            if side.distance(ball) <= gap * ball.radius {
+                support.push(side.normal());
+            }
+        }
+        for floor in self.floors {
+            if let Some(n) = face_within(floor, ball, gap) {
+                support.push(n);
+            }
+        }
+        support
+    }
+
     /// The forces with gravity's push removed on every surface the ball rests on. Resting can
     /// only begin or end at a bounce, so these forces hold until the next one.
     pub fn supported(&self, ball: &Ball, forces: &Forces) -> Forces {
@@ -345,12 +382,17 @@ fn on_segment(floor: &Floor, point: [f64; 2]) -> bool {
 
 /// The normal of the floor's face `ball` rests on, if it touches the face with no normal speed.
 fn resting_on_face(floor: &Floor, ball: &Ball) -> Option<[f64; 2]> {
+    face_within(floor, ball, TOUCH_GAP).filter(|&n| dot(velocity(ball), n).abs() <= TOUCH_SPEED)
+}
+
+/// The normal (pointing at the ball) of the floor's face, if `ball` is within `gap` (a share
+/// of its radius) of touching it, with its foot on the segment.
+fn face_within(floor: &Floor, ball: &Ball, gap: f64) -> Option<[f64; 2]> {
     let n = floor.normal();
     let distance = dot(sub([ball.x, ball.y], floor.from), n);
     let n = if distance < 0.0 { [-n[0], -n[1]] } else { n };
-    let touching = (distance.abs() - ball.radius).abs() <= TOUCH_GAP * ball.radius;
-    let still = dot(velocity(ball), n).abs() <= TOUCH_SPEED;
-    (touching && still && on_segment(floor, [ball.x, ball.y])).then_some(n)
+    let touching = (distance.abs() - ball.radius).abs() <= gap * ball.radius;
+    (touching && on_segment(floor, [ball.x, ball.y])).then_some(n)
 }
 
 /// When the flight `path` of `ball` first touches the floor's face or one of its end points

@@ -152,25 +152,27 @@ impl Poly {
     }
 
     /// `first_crossing` for a straight line: the root by one division, checked against its
-    /// neighbours; bisection only if rounding puts it more than a few numbers off (a slope so
-    /// small that the line stays at zero for a stretch of tiny numbers).
+    /// neighbours. When the line changes less than its own rounding from one number to the
+    /// next (a gentle slope far ahead), the root is only known to a few units of rounding
+    /// divided by the slope: bisection narrows that small bracket down to adjacent numbers.
+    /// `end` may be infinite (a straight flight predicted without a horizon).
     fn line_crossing(&self, end: f64) -> Option<(f64, f64)> {
         let (value, slope) = (self.c[0], self.c[1]);
-        if slope >= 0.0 || self.at(end) >= 0.0 {
+        if slope >= 0.0 || value + slope * end >= 0.0 {
             return None;
         }
-        let mut before = (value / -slope).clamp(0.0, end);
-        for _ in 0..4 {
-            if self.at(before) >= 0.0 {
-                break;
-            }
-            before = before.next_down().max(0.0);
+        let root = (value / -slope).clamp(0.0, end);
+        let after = root.next_up();
+        if self.at(root) >= 0.0 && self.at(after) < 0.0 {
+            return Some((root, after));
         }
-        let after = before.next_up();
-        if self.at(before) >= 0.0 && self.at(after) < 0.0 {
-            return Some((before, after));
+        let rounding = f64::EPSILON * (value.abs() + (slope * root).abs());
+        let spread = 4.0 * (rounding / -slope + f64::EPSILON * root);
+        let (low, high) = ((root - spread).max(0.0), (root + spread).min(end));
+        if self.at(low) >= 0.0 && self.at(high) < 0.0 {
+            return Some(self.bisect(low, high));
         }
-        Some(self.bisect(0.0, end))
+        Some(self.bisect(0.0, end.min(f64::MAX)))
     }
 
     /// Every root strictly inside `(start, end)` where the sign changes, in increasing order.
@@ -271,5 +273,17 @@ mod tests {
         let p = Poly::new(&[6.5625, -22.0, 21.5, -8.0, 1.0]);
         let t = p.first_negative(4.0).expect("a root");
         assert!((t - 0.5).abs() < 1e-14, "expected 0.5, got {t}");
+    }
+
+    #[test]
+    fn a_gentle_line_far_ahead_crosses_at_adjacent_numbers_around_its_root() {
+        // 2.14… − 0.18…·t: from one number to the next near the root the value changes less
+        // than its rounding, so the root by division alone is not the last point ≥ 0.
+        let p = Poly::new(&[2.1438598071437838, -0.1814002630556213]);
+        let (before, after) = p.first_crossing(f64::INFINITY).expect("a crossing");
+        assert!(
+            p.at(before) >= 0.0 && p.at(after) < 0.0 && after == before.next_up(),
+            "expected adjacent times around the root 11.82, got {before} and {after}"
+        );
     }
 }

@@ -112,7 +112,8 @@ pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
 }
 
 /// The `pile` preset with `count` balls of `radius` px spawned instead of its own: the
-/// contact study and its tests heap up different piles in the same box.
+/// contact study and its tests heap up different piles in the same box. They are placed
+/// uniformly at random, overlaps and all, as when the study was measured.
 pub fn pile(count: usize, radius: f64, seed: u64) -> Result<Scene, SceneFileError> {
     let mut scene = preset("pile", seed)?;
     let spawn = Spawn {
@@ -123,7 +124,7 @@ pub fn pile(count: usize, radius: f64, seed: u64) -> Result<Scene, SceneFileErro
         colours: Vec::new(),
         trail_colours: Vec::new(),
     };
-    scene.balls = spawn.balls(f64::from(scene.width), f64::from(scene.height), seed);
+    scene.balls = spawn.overlapping_balls(f64::from(scene.width), f64::from(scene.height), seed);
     scene
         .validate()
         .map_err(|invalid| SceneFileError::Invalid {
@@ -351,7 +352,13 @@ impl SceneFile {
                     allowed: format!("must be at most {MAX_BALLS} balls"),
                 });
             }
-            balls.extend(spawn.balls(f64::from(self.width), f64::from(self.height), seed));
+            let (width, height) = (f64::from(self.width), f64::from(self.height));
+            // Balls that collide start apart; balls that pass through each other may start
+            // anywhere (as the `many` preset's always have).
+            balls.extend(match self.ball_collisions {
+                Some(_) => spawn.balls(width, height, seed),
+                None => spawn.overlapping_balls(width, height, seed),
+            });
         }
         Ok(Scene {
             width: self.width,
@@ -386,26 +393,87 @@ impl SceneFile {
 }
 
 impl Spawn {
+    /// The balls, spread over the box so that they never overlap when they fit side by side:
+    /// the box is cut into equal square slots (the largest that give one per ball), the balls
+    /// go into slots picked at random, each at a random spot inside its slot. A slot narrower
+    /// than a ball gets the ball at its centre: so many balls cannot help overlapping.
     fn balls(&self, width: f64, height: f64, seed: u64) -> Vec<BallSpec> {
         let mut random = Random::new(seed);
-        let cycle = |colours: &[Rgb], i: usize| colours.get(i % colours.len().max(1)).copied();
-        (0..self.count)
-            .map(|i| {
-                let r = self.radius;
-                let (x, y) = (random.range(r, width - r), random.range(r, height - r));
-                let angle = random.range(0.0, std::f64::consts::TAU);
-                let speed = random.range(0.0, self.max_speed);
-                BallSpec {
-                    x,
-                    y,
-                    vx: speed * angle.cos(),
-                    vy: speed * angle.sin(),
-                    radius: r,
-                    colour: cycle(&self.colours, i).unwrap_or(BALL_COLOUR),
-                    trail_colour: cycle(&self.trail_colours, i).unwrap_or(TRAIL_COLOUR),
-                    trail: self.trail,
-                }
+        let Some((columns, rows)) = slots(width, height, self.count) else {
+            return Vec::new(); // an empty box; validation names it
+        };
+        let side = width / columns as f64;
+        let corner = [0.0, (height - rows as f64 * side) / 2.0];
+        // The first `count` of the slots shuffled (Fisher–Yates, stopped early).
+        let mut order: Vec<usize> = (0..columns * rows).collect();
+        for i in 0..self.count {
+            let pick = i + (random.next_u64() % (order.len() - i) as u64) as usize;
+            order.swap(i, pick);
+        }
+        let r = self.radius;
+        let play = (side / 2.0 - r).max(0.0);
+        order[..self.count]
+            .iter()
+            .enumerate()
+            .map(|(i, &slot)| {
+                let centre = [slot % columns, slot / columns]
+                    .map(|k| (k as f64 + 0.5) * side + random.range(-play, play));
+                // `max`/`min` rather than `clamp`, which panics on a radius too big for the
+                // box (validation names that one).
+                let x = (corner[0] + centre[0]).max(r).min(width - r);
+                let y = (corner[1] + centre[1]).max(r).min(height - r);
+                self.ball(i, x, y, &mut random)
             })
             .collect()
+    }
+
+    /// The balls at uniformly random spots, overlapping where chance puts them: for balls
+    /// that pass through each other, and for the contact study's piles (`pile`), whose
+    /// measured figures (`docs/contacts.md`) are for these.
+    fn overlapping_balls(&self, width: f64, height: f64, seed: u64) -> Vec<BallSpec> {
+        let mut random = Random::new(seed);
+        let r = self.radius;
+        (0..self.count)
+            .map(|i| {
+                let (x, y) = (random.range(r, width - r), random.range(r, height - r));
+                self.ball(i, x, y, &mut random)
+            })
+            .collect()
+    }
+
+    /// Ball number `i` at `(x, y)`, moving in a random direction at a random speed.
+    fn ball(&self, i: usize, x: f64, y: f64, random: &mut Random) -> BallSpec {
+        let cycle = |colours: &[Rgb]| colours.get(i % colours.len().max(1)).copied();
+        let angle = random.range(0.0, std::f64::consts::TAU);
+        let speed = random.range(0.0, self.max_speed);
+        BallSpec {
+            x,
+            y,
+            vx: speed * angle.cos(),
+            vy: speed * angle.sin(),
+            radius: self.radius,
+            colour: cycle(&self.colours).unwrap_or(BALL_COLOUR),
+            trail_colour: cycle(&self.trail_colours).unwrap_or(TRAIL_COLOUR),
+            trail: self.trail,
+        }
+    }
+}
+
+/// The columns and rows of the largest square slots, a whole number across the width, of
+/// which at least `count` fit in a `width` × `height` box (`None` for an empty box).
+fn slots(width: f64, height: f64, count: usize) -> Option<(usize, usize)> {
+    if !(width >= 1.0 && height >= 1.0) {
+        return None;
+    }
+    // From about √(count·width/height) columns, but at least enough for square slots to fit
+    // the height once: then `count` columns surely give `count` slots, so the loop is short.
+    let fewest = ((count as f64 * width / height).sqrt().floor()).max((width / height).ceil());
+    let mut columns = (fewest as usize).max(1);
+    loop {
+        let rows = (height * columns as f64 / width) as usize;
+        if columns * rows >= count {
+            return Some((columns, rows));
+        }
+        columns += 1;
     }
 }

@@ -11,6 +11,8 @@
 //! border nor let two touching balls sit two cells apart. The outermost cells reach to
 //! infinity, so a ball that leaves the area the grid was laid over still has a cell.
 
+use std::ops::RangeInclusive;
+
 use super::super::ball::Ball;
 use super::super::poly::Poly;
 
@@ -38,12 +40,17 @@ pub struct Cells {
 }
 
 impl Cells {
-    /// Lays a grid over the balls as they are now and puts each ball in its cell.
-    pub fn rebuild(&mut self, balls: &[Ball]) {
+    /// Lays a grid over the balls as they are now and over `area` (the box, if there is
+    /// one: the balls will spread over it), and puts each ball in its cell.
+    pub fn rebuild(&mut self, balls: &[Ball], area: Option<[f64; 2]>) {
         let (mut left, mut top, mut right, mut bottom) = (0.0, 0.0, 0.0, 0.0);
         let mut largest = 0.0f64;
         if let Some(first) = balls.first() {
             (left, top, right, bottom) = (first.x, first.y, first.x, first.y);
+        }
+        if let Some([width, height]) = area.filter(|_| !balls.is_empty()) {
+            (left, top) = (left.min(0.0), top.min(0.0));
+            (right, bottom) = (right.max(width), bottom.max(height));
         }
         for ball in balls {
             left = f64::min(left, ball.x);
@@ -79,6 +86,16 @@ impl Cells {
         }
     }
 
+    /// Whether `ball` is inside the area the grid was laid over. Beyond it the outermost
+    /// cells fill up, and the grid should be laid again.
+    pub fn covers(&self, ball: &Ball) -> bool {
+        let (right, bottom) = (
+            self.left + self.columns as f64 * self.size,
+            self.top + self.rows as f64 * self.size,
+        );
+        (self.left..=right).contains(&ball.x) && (self.top..=bottom).contains(&ball.y)
+    }
+
     fn cell(&self, [column, row]: [usize; 2]) -> usize {
         row * self.columns + column
     }
@@ -109,10 +126,20 @@ impl Cells {
     }
 
     /// Calls `visit` with every ball in ball `i`'s cell and the eight around it (`i` included).
-    pub fn neighbours(&self, i: usize, mut visit: impl FnMut(usize)) {
-        let [column, row] = self.at[i];
-        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
-            for c in column.saturating_sub(1)..=(column + 1).min(self.columns - 1) {
+    pub fn neighbours(&self, i: usize, visit: impl FnMut(usize)) {
+        let counts = [self.columns, self.rows];
+        let around = [0, 1].map(|a| around(self.at[i][a], counts[a]));
+        self.visit_cells(around, visit);
+    }
+
+    /// Calls `visit` with every ball in the cells of the given column and row ranges.
+    fn visit_cells(
+        &self,
+        [columns, rows]: [RangeInclusive<usize>; 2],
+        mut visit: impl FnMut(usize),
+    ) {
+        for r in rows {
+            for c in columns.clone() {
                 let mut j = self.head[r * self.columns + c];
                 while j != NONE {
                     visit(j as usize);
@@ -133,11 +160,10 @@ impl Cells {
             let index = self.at[i][a];
             let low = origin[a] + index as f64 * self.size - self.margin;
             let high = low + self.size + 2.0 * self.margin;
-            // Distances to the far side of each border, which fall below zero on leaving.
-            let ahead = (index + 1 < counts[a]).then(|| (path[a].scale(-1.0).plus(high), 1));
-            let behind = (index > 0).then(|| (path[a].plus(-low), -1));
-            for (distance, towards) in ahead.into_iter().chain(behind) {
-                if let Some(time) = distance.first_negative(left) {
+            let ahead = (index + 1 < counts[a]).then_some((high, 1));
+            let behind = (index > 0).then_some((low, -1));
+            for (border, towards) in ahead.into_iter().chain(behind) {
+                if let Some(time) = crossing(&path[a], border, towards, left) {
                     if first.is_none_or(|(earliest, _, _)| time < earliest) {
                         first = Some((time, axis, towards));
                     }
@@ -154,4 +180,23 @@ impl Cells {
         *at = at.wrapping_add_signed(isize::from(towards));
         self.link(i);
     }
+}
+
+/// The cell indices from one before `index` to one after it, clipped to `0..count`.
+fn around(index: usize, count: usize) -> RangeInclusive<usize> {
+    index.saturating_sub(1)..=(index + 1).min(count - 1)
+}
+
+/// When a coordinate moving along `path` first passes `border` going towards `towards`
+/// (+1: upwards), within `left` frames. A straight flight needs one division (the cell's
+/// margin absorbs its rounding); a curved one the polynomial's first root.
+fn crossing(path: &Poly, border: f64, towards: i8, left: f64) -> Option<f64> {
+    let side = f64::from(towards);
+    if path.degree() <= 1 {
+        let (start, speed) = (path.coefficient(0), path.coefficient(1));
+        let time = ((border - start) / speed).max(0.0);
+        return (speed * side > 0.0 && time <= left).then_some(time);
+    }
+    // The distance to the far side of the border, which falls below zero on passing it.
+    path.scale(-side).plus(side * border).first_negative(left)
 }

@@ -7,7 +7,7 @@
 //! into another cell of the grid. Each event changes one or two balls, and only their future
 //! events are predicted again.
 //!
-//! - [`queue`]: the calendar of predicted events, a binary heap with a counter per ball.
+//! - [`queue`]: the calendar: each ball's next event, in a binary heap of the balls.
 //! - [`cells`]: the uniform grid that says which balls can meet soon, and when a ball leaves
 //!   its cell.
 //! - [`system`]: one step of the whole scene, event after event; the rules that make inelastic

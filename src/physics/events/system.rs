@@ -12,8 +12,8 @@
 //! `u` becomes `−e·u`.
 //!
 //! **Inelastic collapse.** With `e < 1`, balls can collide infinitely often in finite time
-//! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. Two rules,
-//! the same as for walls (`super::super::exact`), make every step finish:
+//! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. The rules below,
+//! the first as for walls (`super::super::exact`), make every step finish and a pile rest:
 //! - **Rest rule.** At the start of each step a ball that touches, without normal speed, a
 //!   wall, a floor or a ball that is itself held, and that gravity presses onto it, is *held*:
 //!   that part of gravity is removed from its step, as the wall's rest rule does. A collision
@@ -21,7 +21,13 @@
 //!   gravity presses onto a held ball, ends with the falling ball at rest on the held one, as
 //!   on a wall (the held ball is not pushed: what holds it takes the impulse). Without this a
 //!   ball landing on a resting pile would bounce between pile and ball in ever smaller steps,
-//!   without end. A settled pile has no events at all.
+//!   without end.
+//! - **Sleep rule** (DynamO's sleeping particles, Bannerman, Strobl & Pöschel): at the start
+//!   of each step, a ball no faster than gravity makes it in one step that walls, floors and
+//!   sleeping balls within 1 % of its radius hold up completely (no slope left to slide down:
+//!   straight up points between their normals) sleeps: it stops, and for the step it is a
+//!   fixed obstacle. Struck so hard that the rebound reaches `exact::REST_SPEED`, it wakes
+//!   and collides as usual. A settled pile sleeps whole and has no events at all.
 //! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
 //!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
 //!   ball's previous collision is elastic, so a cascade of collisions at one moment ends.
@@ -53,6 +59,9 @@ pub const TC_DURATION: f64 = 1e-6;
 /// Gaps between balls below this share of their radii count as touching, for the rest rule.
 const TOUCH_GAP: f64 = 1e-9;
 
+/// The sleep rule's gap: a ball within this share of its radius of a support leans on it.
+const SLEEP_GAP: f64 = 0.01;
+
 /// What the event-driven steps of the last frame did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct EventCounts {
@@ -60,6 +69,8 @@ pub struct EventCounts {
     pub events: u64,
     /// Of those, bounces between two balls.
     pub ball_collisions: u64,
+    /// Of those, bounces off (or coming to rest on) a wall, a floor's face or a floor's end.
+    pub contacts: u64,
     /// The most events any single step of the frame resolved.
     pub most_in_a_step: u64,
     /// Steps that hit the cap and dropped the rest of their time.
@@ -82,10 +93,15 @@ pub struct EventDriven {
     support: Vec<Support>,
     /// Per ball: whether something holds it up (part of gravity removed).
     held: Vec<bool>,
+    /// Per ball: whether it sleeps this step (the sleep rule).
+    asleep: Vec<bool>,
     /// Per ball: when it last collided with another ball, frames since the first step.
     last_collision: Vec<f64>,
     /// Frames since the first step, at the start of this step.
     elapsed: f64,
+    /// Whether the calendar, the grid and the clocks carry over into the next step, so that
+    /// it need not predict every ball's events afresh (see `EventDriven::step`).
+    carried: bool,
     counts: EventCounts,
 }
 
@@ -94,6 +110,8 @@ struct Step<'a> {
     integrator: Integrator,
     forces: &'a Forces,
     effects: &'a Effects,
+    /// How far ahead events are predicted, frames since the step's start.
+    horizon: f64,
 }
 
 impl EventDriven {
@@ -108,8 +126,10 @@ impl EventDriven {
             contact: Vec::new(),
             support: Vec::new(),
             held: Vec::new(),
+            asleep: Vec::new(),
             last_collision: Vec::new(),
             elapsed: 0.0,
+            carried: false,
             counts: EventCounts::default(),
         }
     }
@@ -136,6 +156,13 @@ impl EventDriven {
     }
 
     /// Advances `balls` by one step of `forces.dt` frames, every contact at its moment.
+    ///
+    /// Without gravity and drag every flight is a straight line that nothing bends between
+    /// steps, so a prediction stays true past the step's end: events are then predicted
+    /// without a horizon, and the calendar, the grid and the clocks carry over into the next
+    /// step, where the end of a step is only a stop to draw the frame (event-driven molecular
+    /// dynamics runs this way). Anything else (gravity's kicks, drag, a capped step, a ball
+    /// that left the area the grid was laid over) starts the next step afresh.
     fn step(
         &mut self,
         balls: &mut [Ball],
@@ -143,25 +170,37 @@ impl EventDriven {
         forces: &Forces,
         effects: &Effects,
     ) {
+        let straight = forces.gravity.is_none() && forces.drag.is_none();
         let step = Step {
             integrator,
             forces,
             effects,
+            horizon: if straight { f64::INFINITY } else { forces.dt },
         };
-        self.start(balls, &step);
+        if !self.carried {
+            self.start(balls, &step);
+        }
         let cap = MAX_EVENTS_PER_BALL * balls.len() as u64;
         let mut events = 0;
         let mut end = forces.dt;
-        while let Some(event) = self.queue.pop() {
+        // Every branch predicts the ball again, which replaces its event in the calendar.
+        while let Some((i, event, current)) = self.queue.earliest(forces.dt) {
+            let now = event.time;
+            if !current {
+                // Its partner changed course since: predict the ball again from here.
+                self.fly(&mut balls[i], i, now, &step);
+                self.predict(balls, i, &step);
+                continue;
+            }
             if events == cap {
-                end = event.time; // no clock is later: events come out in time order
+                end = now; // no clock is later: events come out in time order
                 self.counts.capped_steps += 1;
                 break;
             }
             events += 1;
-            let (i, now) = (event.ball as usize, event.time);
             self.fly(&mut balls[i], i, now, &step);
             match event.what {
+                What::Nothing => {}
                 What::Ball(j) => {
                     let j = j as usize;
                     self.fly(&mut balls[j], j, now, &step);
@@ -169,28 +208,31 @@ impl EventDriven {
                     self.counts.ball_collisions += 1;
                     self.queue.changed(i);
                     self.queue.changed(j);
-                    self.predict(balls, i, &step, false);
-                    self.predict(balls, j, &step, false);
+                    self.predict(balls, i, &step);
+                    self.predict(balls, j, &step);
                 }
                 What::Contact => {
                     if let Some(contact) = self.contact[i] {
                         contact.bounce(&mut balls[i], forces);
+                        self.counts.contacts += 1;
                     }
                     self.flight[i] = Bounds::of(&balls[i], effects).supported(&balls[i], forces);
                     self.held[i] = self.flight[i] != *forces;
                     self.queue.changed(i);
-                    self.predict(balls, i, &step, false);
+                    self.predict(balls, i, &step);
                 }
                 What::Cell { axis, towards } => {
+                    // The ball keeps its course, so events other balls predicted with it stand.
                     self.cells.shift(i, axis, towards);
-                    self.queue.changed(i);
-                    self.predict(balls, i, &step, false);
+                    self.predict(balls, i, &step);
                 }
             }
         }
         let unused = forces.dt - end;
+        let mut covered = true;
         for (i, ball) in balls.iter_mut().enumerate() {
             self.fly(ball, i, end, &step);
+            covered &= self.cells.covers(ball);
             let flight = Forces {
                 dt: end,
                 ..self.flight[i]
@@ -203,6 +245,11 @@ impl EventDriven {
                 ball.vy -= g[1] * unused;
             }
         }
+        self.carried = straight && unused == 0.0 && covered;
+        if self.carried {
+            self.queue.carry_over(forces.dt);
+            self.clock.fill(0.0);
+        }
         self.elapsed += forces.dt;
         self.counts.events += events;
         self.counts.most_in_a_step = self.counts.most_in_a_step.max(events);
@@ -214,7 +261,8 @@ impl EventDriven {
         for ball in balls.iter_mut() {
             exact::put_back(ball, step.effects);
         }
-        self.cells.rebuild(balls);
+        let area = step.effects.walls.as_ref().map(|w| [w.width, w.height]);
+        self.cells.rebuild(balls, area);
         self.queue.reset(balls.len());
         self.clock.clear();
         self.clock.resize(balls.len(), 0.0);
@@ -228,17 +276,75 @@ impl EventDriven {
         );
         self.held.clear();
         self.held.resize(balls.len(), false);
+        self.asleep.clear();
+        self.asleep.resize(balls.len(), false);
         self.last_collision.resize(balls.len(), f64::NEG_INFINITY);
         if step.forces.gravity.is_some() {
+            self.find_asleep(balls, step);
             self.find_held(balls, step.forces);
         }
         self.flight.clear();
         for (i, ball) in balls.iter_mut().enumerate() {
-            self.flight.push(self.support[i].hold(step.forces));
+            let flight = if self.asleep[i] {
+                Forces {
+                    gravity: None,
+                    ..*step.forces
+                }
+            } else {
+                self.support[i].hold(step.forces)
+            };
+            self.flight.push(flight);
             step.integrator.kick_before(ball, &self.flight[i]);
         }
         for i in 0..balls.len() {
-            self.predict(balls, i, step, true);
+            self.predict(balls, i, step);
+        }
+    }
+
+    /// The sleep rule (after DynamO's sleeping particles, Bannerman et al.), from the bottom
+    /// of a pile up: a ball no faster than gravity makes it in one step, held up completely
+    /// (no slope left to slide down) by walls, floors and sleeping balls within [`SLEEP_GAP`]
+    /// of it, sleeps this step: it stops and stays put. Each step decides afresh, so a ball
+    /// whose support wakes or moves away falls again.
+    fn find_asleep(&mut self, balls: &mut [Ball], step: &Step) {
+        let forces = step.forces;
+        let Some(g) = forces.gravity else {
+            return;
+        };
+        let sleep_speed = g[0].hypot(g[1]) * forces.dt;
+        let slow = |ball: &Ball| ball.vx.hypot(ball.vy) <= sleep_speed;
+        let mut candidates: Vec<usize> = (0..balls.len()).filter(|&i| slow(&balls[i])).collect();
+        // Lowest first (furthest along gravity), so a pile is settled in one pass or few.
+        let depth = |i: usize| dot(g, [balls[i].x, balls[i].y]);
+        candidates.sort_by(|&a, &b| depth(b).total_cmp(&depth(a)));
+        let mut changed = true;
+        while changed {
+            changed = false;
+            for &i in &candidates {
+                if self.asleep[i] {
+                    continue;
+                }
+                let ball = &balls[i];
+                let mut support = Bounds::of(ball, step.effects).near(ball, SLEEP_GAP);
+                let asleep = &self.asleep;
+                self.cells.neighbours(i, |j| {
+                    if j != i && asleep[j] {
+                        if let Some(n) = leaning_on(ball, &balls[j], SLEEP_GAP) {
+                            support.push(n);
+                        }
+                    }
+                });
+                if support.hold_completely(g) {
+                    self.asleep[i] = true;
+                    changed = true;
+                }
+            }
+        }
+        for (i, ball) in balls.iter_mut().enumerate() {
+            if self.asleep[i] {
+                (ball.vx, ball.vy) = (0.0, 0.0);
+                self.held[i] = true;
+            }
         }
     }
 
@@ -281,25 +387,18 @@ impl EventDriven {
         }
     }
 
-    /// Predicts the next events of ball `i` (whose clock is now): contacts with walls and
-    /// floors, leaving its cell, and touching each ball in the neighbouring cells (at the
-    /// start of the step only those after it, so each pair is predicted once).
-    fn predict(&mut self, balls: &[Ball], i: usize, step: &Step, starting: bool) {
+    /// Predicts the next event of ball `i` (whose clock is now) up to the step's horizon: the
+    /// earliest of its contacts with walls and floors, leaving its cell, and touching each ball
+    /// in the neighbouring cells.
+    fn predict(&mut self, balls: &[Ball], i: usize, step: &Step) {
         let now = self.clock[i];
-        let left = step.forces.dt - now;
         let ball = &balls[i];
         let path = step.integrator.path(ball, &self.flight[i]);
-        let bounds = Bounds::of(ball, step.effects);
-        self.contact[i] = bounds
-            .first_contact(ball, &path, left)
-            .map(|(time, contact)| {
-                self.queue.push(now + time, i, What::Contact);
-                contact
-            });
-        if let Some((time, axis, towards)) = self.cells.exit(i, &path, left) {
-            self.queue.push(now + time, i, What::Cell { axis, towards });
+        // The earliest so far, as time from now; later candidates are not looked for.
+        let mut first = (step.horizon - now, What::Nothing);
+        if let Some((time, axis, towards)) = self.cells.exit(i, &path, first.0) {
+            first = (time, What::Cell { axis, towards });
         }
-        let (queue, cells) = (&mut self.queue, &self.cells);
         let (clock, flight) = (&self.clock, &self.flight);
         // Straight flights (the Euler methods, or nothing to curve them) need no polynomials.
         let straight = |forces: &Forces| {
@@ -309,8 +408,8 @@ impl EventDriven {
             ) || (forces.gravity.is_none() && forces.drag.is_none())
         };
         let mine_straight = straight(&flight[i]);
-        cells.neighbours(i, |j| {
-            if j == i || (starting && j < i) {
+        self.cells.neighbours(i, |j| {
+            if j == i {
                 return;
             }
             let other = &balls[j];
@@ -322,7 +421,7 @@ impl EventDriven {
                     other.y + other.vy * behind - ball.y,
                 ];
                 let velocity = [other.vx - ball.vx, other.vy - ball.vy];
-                toi::straight(offset, velocity, reach, left)
+                toi::straight(offset, velocity, reach, first.0)
             } else {
                 // The other ball as it will be now, so both flights start at the same moment.
                 let mut there = Ball::new(other.x, other.y, other.vx, other.vy, other.radius, 0);
@@ -331,12 +430,28 @@ impl EventDriven {
                 }
                 let theirs = step.integrator.path(&there, &flight[j]);
                 let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis].minus_poly(&path[axis]));
-                toi::first_touch(&relative, reach, left)
+                toi::first_touch(&relative, reach, first.0)
             };
-            if let Some(time) = touch {
-                queue.push(now + time, i, What::Ball(j as u32));
+            if let Some(time) = touch.filter(|&time| time < first.0) {
+                first = (time, What::Ball(j as u32));
             }
         });
+        // Walls and floors last: with the horizon cut short, far ones are skipped unsolved.
+        let bounds = Bounds::of(ball, step.effects);
+        self.contact[i] = bounds
+            .first_contact(ball, &path, first.0)
+            .filter(|&(time, _)| time < first.0 || first.1 == What::Nothing)
+            .map(|(time, contact)| {
+                first = (time, What::Contact);
+                contact
+            });
+        let (time, what) = first;
+        let time = if what == What::Nothing {
+            f64::INFINITY
+        } else {
+            now + time
+        };
+        self.queue.set(i, time, what);
     }
 
     /// Bounces balls `i` and `j`, which touch now, along the line through their centres.
@@ -369,6 +484,15 @@ impl EventDriven {
         } else {
             self.restitution
         };
+        // A sleeping ball struck hard enough to rebound at the rest speed wakes (and falls
+        // again); struck softer it stays put, as a wall would.
+        for k in [i, j] {
+            if self.asleep[k] && -e * approach >= REST_SPEED {
+                self.asleep[k] = false;
+                self.held[k] = false;
+                self.flight[k] = *forces;
+            }
+        }
         if e < 1.0 && -e * approach < REST_SPEED {
             let resting = if self.held[i] && exact::pressed(forces, n) {
                 Some((i, j, n))
@@ -391,7 +515,11 @@ impl EventDriven {
         let (mass_a, mass_b) = (a.radius * a.radius, b.radius * b.radius);
         let total = mass_a + mass_b;
         let change = (1.0 + e) * approach;
-        let (kick_a, kick_b) = (change * mass_b / total, change * mass_a / total);
+        let (kick_a, kick_b) = match (self.asleep[i], self.asleep[j]) {
+            (true, _) => (0.0, change),
+            (_, true) => (change, 0.0),
+            _ => (change * mass_b / total, change * mass_a / total),
+        };
         let a = &mut balls[i];
         a.vx += kick_a * n[0];
         a.vy += kick_a * n[1];
@@ -404,13 +532,19 @@ impl EventDriven {
 /// The normal (from `below` to `ball`) of the contact `ball` rests on `below` through, if it
 /// touches it with no normal speed between them and gravity presses it on.
 fn resting_on(ball: &Ball, below: &Ball, forces: &Forces) -> Option<[f64; 2]> {
+    let n = leaning_on(ball, below, TOUCH_GAP)?;
+    let still = dot([ball.vx - below.vx, ball.vy - below.vy], n).abs() <= TOUCH_SPEED;
+    (still && exact::pressed(forces, n)).then_some(n)
+}
+
+/// The normal (from `below` to `ball`) if the gap between them is at most `gap` of their
+/// radii.
+fn leaning_on(ball: &Ball, below: &Ball, gap: f64) -> Option<[f64; 2]> {
     let offset = [ball.x - below.x, ball.y - below.y];
     let distance = offset[0].hypot(offset[1]);
     let reach = ball.radius + below.radius;
-    if distance == 0.0 || distance - reach > TOUCH_GAP * reach {
+    if distance == 0.0 || distance - reach > gap * reach {
         return None;
     }
-    let n = [offset[0] / distance, offset[1] / distance];
-    let still = dot([ball.vx - below.vx, ball.vy - below.vy], n).abs() <= TOUCH_SPEED;
-    (still && exact::pressed(forces, n)).then_some(n)
+    Some([offset[0] / distance, offset[1] / distance])
 }
