@@ -33,6 +33,8 @@
 //!
 //! Everything happens in a fixed order (the grid's), so the same balls give the same bytes.
 
+use std::ops::Range;
+
 use super::ball::Ball;
 use super::collisions::coincident_normal;
 use super::effects::Effects;
@@ -135,9 +137,48 @@ pub struct ContactSolver {
     /// `order[k]` is the scene's index of `local[k]`; `slot[i]` is where ball `i` is in `local`.
     order: Vec<usize>,
     slot: Vec<usize>,
-    /// Whether each ball (of `local`) has a contact this step, and the list of those that do.
-    touching: Vec<bool>,
+    /// The balls (of `local`) with a contact this step, island by island.
     active: Vec<usize>,
+    /// Where each island's balls are in `active` and its contacts in `pairs` and `fixed`.
+    islands: Vec<Island>,
+    /// Scratch space for finding the islands: the union–find tree, each ball's island, and
+    /// the contacts in the order found.
+    parent: Vec<usize>,
+    island_of: Vec<usize>,
+    spare_pairs: Vec<PairContact>,
+    spare_fixed: Vec<FixedContact>,
+}
+
+/// A group of balls joined by pair contacts, directly or through others, that touches no
+/// ball outside it this step: what happens in one island cannot change another.
+#[derive(Clone, Debug, Default)]
+struct Island {
+    balls: Range<usize>,
+    pairs: Range<usize>,
+    fixed: Range<usize>,
+}
+
+impl Island {
+    fn ranges(&mut self) -> [&mut Range<usize>; 3] {
+        [&mut self.balls, &mut self.pairs, &mut self.fixed]
+    }
+
+    fn starts(&self) -> [usize; 3] {
+        [self.balls.start, self.pairs.start, self.fixed.start]
+    }
+}
+
+/// `island_of` for a ball without contacts.
+const NO_ISLAND: usize = usize::MAX;
+
+/// The ball that names `ball`'s island in the union–find tree `parent` (the island's first
+/// ball), halving the path on the way so later searches are short.
+fn root(parent: &mut [usize], mut ball: usize) -> usize {
+    while parent[ball] != ball {
+        parent[ball] = parent[parent[ball]];
+        ball = parent[ball];
+    }
+    ball
 }
 
 impl ContactSolver {
@@ -153,8 +194,12 @@ impl ContactSolver {
             local: Vec::new(),
             order: Vec::new(),
             slot: Vec::new(),
-            touching: Vec::new(),
             active: Vec::new(),
+            islands: Vec::new(),
+            parent: Vec::new(),
+            island_of: Vec::new(),
+            spare_pairs: Vec::new(),
+            spare_fixed: Vec::new(),
         }
     }
 
@@ -175,28 +220,35 @@ impl ContactSolver {
             tally(Work::Contacts);
             self.find(scene_balls, effects, dt, rest_speed);
             self.recall();
-            self.sort_out_touching(scene_balls.len());
+            self.sort_into_islands(scene_balls.len());
             // The solver works on its own copy of the balls, in the grid's order: contacts
             // then touch balls close together in memory, which keeps 100,000 balls fast.
             let mut local = std::mem::take(&mut self.local);
             let balls = &mut local[..];
             // A ball that can touch nothing in this step takes it in one go, as in the lesson.
-            for (ball, &touching) in balls.iter_mut().zip(&self.touching) {
-                if !touching {
+            for (ball, &island) in balls.iter_mut().zip(&self.island_of) {
+                if island == NO_ISLAND {
                     motion.integrator.step(ball, &whole);
                 }
             }
-            for _ in 0..iterations {
-                for &i in &self.active {
-                    motion.integrator.kick_before(&mut balls[i], &forces);
+            // Islands share no ball, so each is solved on its own, all its sub-steps at once,
+            // while its few balls and contacts are in the cache.
+            for island in &self.islands {
+                let active = &self.active[island.balls.clone()];
+                let pairs = &mut self.pairs[island.pairs.clone()];
+                let fixed = &mut self.fixed[island.fixed.clone()];
+                for _ in 0..iterations {
+                    for &i in active {
+                        motion.integrator.kick_before(&mut balls[i], &forces);
+                    }
+                    warm_start(pairs, fixed, balls);
+                    solve_velocities(pairs, fixed, balls, sub);
+                    for &i in active {
+                        motion.integrator.fly(&mut balls[i], &forces, forces.dt);
+                        motion.integrator.kick_after(&mut balls[i], &forces);
+                    }
+                    solve_positions(pairs, fixed, balls);
                 }
-                self.warm_start(balls);
-                self.solve_velocities(balls, sub);
-                for &i in &self.active {
-                    motion.integrator.fly(&mut balls[i], &forces, forces.dt);
-                    motion.integrator.kick_after(&mut balls[i], &forces);
-                }
-                self.solve_positions(balls);
             }
             for (copy, &i) in local.iter().zip(&self.order) {
                 let ball = &mut scene_balls[i];
@@ -330,19 +382,75 @@ impl ContactSolver {
         }
     }
 
-    /// Marks the balls with at least one contact this step, and lists them in order.
-    fn sort_out_touching(&mut self, count: usize) {
-        self.touching.clear();
-        self.touching.resize(count, false);
+    /// Groups the balls with a contact this step into islands — balls joined by pair
+    /// contacts, directly or through others — and lists each island's balls and contacts
+    /// together, keeping their order within the island.
+    fn sort_into_islands(&mut self, count: usize) {
+        // Union–find: every ball starts as its own island; each pair contact joins two.
+        let parent = &mut self.parent;
+        parent.clear();
+        parent.extend(0..count);
         for contact in &self.pairs {
-            self.touching[contact.a] = true;
-            self.touching[contact.b] = true;
+            let (a, b) = (root(parent, contact.a), root(parent, contact.b));
+            parent[a.max(b)] = a.min(b);
+        }
+        // Number the islands of the balls with a contact in the order of their first ball;
+        // the rest stay at `NO_ISLAND`. Then count each island's balls and contacts.
+        let island_of = &mut self.island_of;
+        island_of.clear();
+        island_of.resize(count, NO_ISLAND);
+        let with_contact = self.pairs.iter().flat_map(|c| [c.a, c.b]);
+        for ball in with_contact.chain(self.fixed.iter().map(|c| c.ball)) {
+            island_of[ball] = 0;
+        }
+        self.islands.clear();
+        for ball in 0..count {
+            if island_of[ball] != NO_ISLAND {
+                let first = root(parent, ball);
+                if first == ball {
+                    island_of[ball] = self.islands.len();
+                    self.islands.push(Island::default());
+                } else {
+                    island_of[ball] = island_of[first]; // `first < ball`: numbered already
+                }
+                self.islands[island_of[ball]].balls.end += 1;
+            }
+        }
+        for contact in &self.pairs {
+            self.islands[island_of[contact.a]].pairs.end += 1;
         }
         for contact in &self.fixed {
-            self.touching[contact.ball] = true;
+            self.islands[island_of[contact.ball]].fixed.end += 1;
         }
-        self.active.clear();
-        self.active.extend((0..count).filter(|&i| self.touching[i]));
+        // Turn the counts into ranges, one island after another.
+        let mut ends = [0; 3];
+        for island in &mut self.islands {
+            for (range, end) in island.ranges().into_iter().zip(&mut ends) {
+                *range = *end..*end + range.end;
+                *end = range.end;
+            }
+        }
+        // Place each ball and contact at its island's next free place (a counting sort).
+        let mut next: Vec<[usize; 3]> = self.islands.iter().map(|i| i.starts()).collect();
+        let mut place = |island: usize, kind: usize| {
+            let place = next[island][kind];
+            next[island][kind] += 1;
+            place
+        };
+        self.active.resize(ends[0], 0);
+        for ball in 0..count {
+            if island_of[ball] != NO_ISLAND {
+                self.active[place(island_of[ball], 0)] = ball;
+            }
+        }
+        self.spare_pairs.clone_from(&self.pairs);
+        for contact in &self.spare_pairs {
+            self.pairs[place(island_of[contact.a], 1)] = *contact;
+        }
+        self.spare_fixed.clone_from(&self.fixed);
+        for contact in &self.spare_fixed {
+            self.fixed[place(island_of[contact.ball], 2)] = *contact;
+        }
     }
 
     /// Gives each contact the impulse it ended the last step with (0 if it is new).
@@ -357,75 +465,6 @@ impl ContactSolver {
         }
     }
 
-    /// Applies each contact's impulse of the last sub-step again, and measures its gap anew.
-    fn warm_start(&mut self, balls: &mut [Ball]) {
-        for contact in &mut self.pairs {
-            let (a, b) = two(balls, contact.a, contact.b);
-            let (separation, normal) = pair_gap(a, b, contact.reach, contact.state.normal);
-            (contact.state.separation, contact.state.normal) = (separation, normal);
-            let carried = contact.state.carry();
-            contact.push_velocities(a, b, carried);
-        }
-        for contact in &mut self.fixed {
-            let ball = &mut balls[contact.ball];
-            contact.state.separation = contact.gap(ball);
-            let impulse = contact.state.carry() / contact.state.mass;
-            ball.vx += impulse * contact.state.normal[0];
-            ball.vy += impulse * contact.state.normal[1];
-        }
-    }
-
-    /// One Gauss–Seidel pass over every contact's velocity.
-    fn solve_velocities(&mut self, balls: &mut [Ball], sub: SubStep) {
-        for contact in &mut self.pairs {
-            let (a, b) = two(balls, contact.a, contact.b);
-            let [nx, ny] = contact.state.normal;
-            let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
-            let change = contact.state.solve(speed, sub);
-            contact.push_velocities(a, b, change);
-        }
-        for contact in &mut self.fixed {
-            let ball = &mut balls[contact.ball];
-            let [nx, ny] = contact.state.normal;
-            let change = contact.state.solve(ball.vx * nx + ball.vy * ny, sub) / contact.state.mass;
-            ball.vx += change * nx;
-            ball.vy += change * ny;
-        }
-    }
-
-    /// One Gauss–Seidel pass that pushes overlapping contacts partly apart, positions only.
-    fn solve_positions(&mut self, balls: &mut [Ball]) {
-        for contact in &self.pairs {
-            let (a, b) = two(balls, contact.a, contact.b);
-            let allowed = SLOP * contact.reach / 2.0;
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let closest = contact.reach - allowed;
-            if dx * dx + dy * dy >= closest * closest {
-                continue; // the common case, without a square root
-            }
-            let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, contact.state.normal);
-            if separation < -allowed {
-                // Each ball moves its share: the lighter one more.
-                let push = -(separation + allowed) * PUSH * contact.state.mass;
-                let (share_a, share_b) = (push * contact.inverse_a, push * contact.inverse_b);
-                a.x -= share_a * nx;
-                a.y -= share_a * ny;
-                b.x += share_b * nx;
-                b.y += share_b * ny;
-            }
-        }
-        for contact in &self.fixed {
-            let ball = &mut balls[contact.ball];
-            let separation = contact.gap(ball);
-            let allowed = SLOP * ball.radius;
-            if separation < -allowed {
-                let push = -(separation + allowed) * PUSH;
-                ball.x += push * contact.state.normal[0];
-                ball.y += push * contact.state.normal[1];
-            }
-        }
-    }
-
     /// Keeps the impulses for the next step's warm start.
     fn remember(&mut self) {
         self.remembered.clear();
@@ -437,6 +476,80 @@ impl ContactSolver {
                 .filter(|&(_, impulse)| impulse > 0.0),
         );
         self.remembered.sort_unstable_by_key(|&(key, _)| key);
+    }
+}
+
+/// Applies each contact's impulse of the last sub-step again, and measures its gap anew.
+fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut [Ball]) {
+    for contact in pairs.iter_mut() {
+        let (a, b) = two(balls, contact.a, contact.b);
+        let (separation, normal) = pair_gap(a, b, contact.reach, contact.state.normal);
+        (contact.state.separation, contact.state.normal) = (separation, normal);
+        let carried = contact.state.carry();
+        contact.push_velocities(a, b, carried);
+    }
+    for contact in fixed.iter_mut() {
+        let ball = &mut balls[contact.ball];
+        contact.state.separation = contact.gap(ball);
+        let impulse = contact.state.carry() / contact.state.mass;
+        ball.vx += impulse * contact.state.normal[0];
+        ball.vy += impulse * contact.state.normal[1];
+    }
+}
+
+/// One Gauss–Seidel pass over every contact's velocity.
+fn solve_velocities(
+pairs: &mut [PairContact],
+fixed: &mut [FixedContact],
+balls: &mut [Ball],
+sub: SubStep,
+) {
+    for contact in pairs.iter_mut() {
+        let (a, b) = two(balls, contact.a, contact.b);
+        let [nx, ny] = contact.state.normal;
+        let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
+        let change = contact.state.solve(speed, sub);
+        contact.push_velocities(a, b, change);
+    }
+    for contact in fixed.iter_mut() {
+        let ball = &mut balls[contact.ball];
+        let [nx, ny] = contact.state.normal;
+        let change = contact.state.solve(ball.vx * nx + ball.vy * ny, sub) / contact.state.mass;
+        ball.vx += change * nx;
+        ball.vy += change * ny;
+    }
+}
+
+/// One Gauss–Seidel pass that pushes overlapping contacts partly apart, positions only.
+fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [Ball]) {
+    for contact in pairs {
+        let (a, b) = two(balls, contact.a, contact.b);
+        let allowed = SLOP * contact.reach / 2.0;
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        let closest = contact.reach - allowed;
+        if dx * dx + dy * dy >= closest * closest {
+            continue; // the common case, without a square root
+        }
+        let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, contact.state.normal);
+        if separation < -allowed {
+            // Each ball moves its share: the lighter one more.
+            let push = -(separation + allowed) * PUSH * contact.state.mass;
+            let (share_a, share_b) = (push * contact.inverse_a, push * contact.inverse_b);
+            a.x -= share_a * nx;
+            a.y -= share_a * ny;
+            b.x += share_b * nx;
+            b.y += share_b * ny;
+        }
+    }
+    for contact in fixed {
+        let ball = &mut balls[contact.ball];
+        let separation = contact.gap(ball);
+        let allowed = SLOP * ball.radius;
+        if separation < -allowed {
+            let push = -(separation + allowed) * PUSH;
+            ball.x += push * contact.state.normal[0];
+            ball.y += push * contact.state.normal[1];
+        }
     }
 }
 
