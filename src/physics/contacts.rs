@@ -18,10 +18,10 @@
 //!    at once, as in the lesson.
 //! 2. Then, for the others, `iterations` times, for a sub-step `h` of the step:
 //!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
-//!    - **Warm start** (under gravity only): each contact pushes again with the lesser of its
-//!      last two sub-steps' impulses (the previous step's, at first). A stack that stood then
+//!    - **Warm start** (under gravity only): each contact pushes again with its total impulse
+//!      of the sub-step before (the previous step's, at first). A stack that stood then
 //!      stands now, instead of its weight having to travel up through it again, one ball per
-//!      pass; an impact, a spike in one sub-step, is not pushed twice.
+//!      pass. A bounce is not carried: it is over once the balls part.
 //!    - **Velocity pass** (Gauss–Seidel): contact after contact, the impulse that brings its
 //!      relative normal speed to its target, added to its running total, which is never
 //!      negative (contacts push, never pull). A contact closing faster than the rest speed
@@ -75,6 +75,8 @@ struct SubStep {
     /// from one sub-step to the next: without it every contact's push is an impact, and
     /// pushing again would only add energy for the next pass to take back.
     loaded: bool,
+    /// Below this parting speed, px/frame, a contact does not bounce.
+    rest_speed: f64,
 }
 
 /// A contact between balls `a` and `b`, the normal pointing from `a` to `b`.
@@ -106,16 +108,10 @@ struct ContactState {
     /// Gap at the start of the sub-step, px (negative: overlap).
     separation: f64,
     restitution: f64,
-    /// The relative normal speed a bounce leaves it with, px/frame: `e` times the approach
-    /// speed when the contact was found, if that is above the rest speed; else 0. Spent
-    /// once it bounces.
-    rebound: f64,
     /// `1 / (1/m_a + 1/m_b)`: the impulse that changes the relative normal speed by 1.
     mass: f64,
     /// Total impulse along the normal in this sub-step, never negative.
     impulse: f64,
-    /// The total of the sub-step before.
-    previous: f64,
     /// Names the contact from step to step, for the warm start.
     key: u64,
 }
@@ -210,15 +206,15 @@ impl ContactSolver {
         let iterations = motion.iterations;
         let forces = Forces::new(effects).split(steps * iterations);
         let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
-        let rest_speed = REST_SPEED * gravity / LESSON_GRAVITY;
         let sub = SubStep {
             h: forces.dt,
             loaded: gravity > 0.0,
+            rest_speed: REST_SPEED * gravity / LESSON_GRAVITY,
         };
         let dt = 1.0 / f64::from(steps);
         for _ in 0..steps {
             tally(Work::Contacts);
-            self.find(scene_balls, effects, dt, rest_speed);
+            self.find(scene_balls, effects, dt);
             self.recall();
             self.sort_into_islands(scene_balls.len());
             // The solver works on its own copy of the balls, in the grid's order: contacts
@@ -264,7 +260,7 @@ impl ContactSolver {
 
     /// This step's contacts: ball pairs from the grid, in its order; then each ball's walls
     /// and floors, in ball order; each only if it can touch within the step `dt`.
-    fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64, rest_speed: f64) {
+    fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
         let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
         // How far gravity alone can move a ball in the step.
         let fall = gravity * dt * dt;
@@ -306,8 +302,11 @@ impl ContactSolver {
             let reach = ball_a.radius + ball_b.radius;
             let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
             let mass = mass_a * mass_b / (mass_a + mass_b);
-            let (nx, ny) = coincident_normal(j);
-            let (separation, normal) = pair_gap(ball_a, ball_b, reach, [nx, ny]);
+            let coincident = || {
+                let (nx, ny) = coincident_normal(j);
+                [nx, ny]
+            };
+            let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
             let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
             // Both balls fall alike, but a ball pushed from above can close the gap by as
             // much as gravity moves it.
@@ -318,15 +317,7 @@ impl ContactSolver {
                 a,
                 b,
                 reach,
-                state: ContactState::new(
-                    normal,
-                    separation,
-                    self.restitution,
-                    approach,
-                    rest_speed,
-                    mass,
-                    key,
-                ),
+                state: ContactState::new(normal, separation, self.restitution, mass, key),
                 inverse_a: 1.0 / mass_a,
                 inverse_b: 1.0 / mass_b,
             });
@@ -348,8 +339,6 @@ impl ContactSolver {
                             normal,
                             separation,
                             restitution,
-                            approach,
-                            rest_speed,
                             mass(ball),
                             (i as u64) << 32 | (u64::from(u32::MAX) - id),
                         ),
@@ -438,9 +427,9 @@ impl ContactSolver {
             place
         };
         self.active.resize(ends[0], 0);
-        for ball in 0..count {
-            if island_of[ball] != NO_ISLAND {
-                self.active[place(island_of[ball], 0)] = ball;
+        for (ball, &island) in island_of.iter().enumerate() {
+            if island != NO_ISLAND {
+                self.active[place(island, 0)] = ball;
             }
         }
         self.spare_pairs.clone_from(&self.pairs);
@@ -461,7 +450,6 @@ impl ContactSolver {
             state.impulse = remembered
                 .binary_search_by_key(&state.key, |&(key, _)| key)
                 .map_or(0.0, |found| remembered[found].1);
-            state.previous = state.impulse;
         }
     }
 
@@ -472,7 +460,7 @@ impl ContactSolver {
         self.remembered.extend(
             states
                 .chain(self.fixed.iter().map(|c| &c.state))
-                .map(|state| (state.key, state.least()))
+                .map(|state| (state.key, state.impulse))
                 .filter(|&(_, impulse)| impulse > 0.0),
         );
         self.remembered.sort_unstable_by_key(|&(key, _)| key);
@@ -483,15 +471,14 @@ impl ContactSolver {
 fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut [Ball]) {
     for contact in pairs.iter_mut() {
         let (a, b) = two(balls, contact.a, contact.b);
-        let (separation, normal) = pair_gap(a, b, contact.reach, contact.state.normal);
+        let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
         (contact.state.separation, contact.state.normal) = (separation, normal);
-        let carried = contact.state.carry();
-        contact.push_velocities(a, b, carried);
+        contact.push_velocities(a, b, contact.state.impulse);
     }
     for contact in fixed.iter_mut() {
         let ball = &mut balls[contact.ball];
         contact.state.separation = contact.gap(ball);
-        let impulse = contact.state.carry() / contact.state.mass;
+        let impulse = contact.state.impulse / contact.state.mass;
         ball.vx += impulse * contact.state.normal[0];
         ball.vy += impulse * contact.state.normal[1];
     }
@@ -499,10 +486,10 @@ fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut
 
 /// One Gauss–Seidel pass over every contact's velocity.
 fn solve_velocities(
-pairs: &mut [PairContact],
-fixed: &mut [FixedContact],
-balls: &mut [Ball],
-sub: SubStep,
+    pairs: &mut [PairContact],
+    fixed: &mut [FixedContact],
+    balls: &mut [Ball],
+    sub: SubStep,
 ) {
     for contact in pairs.iter_mut() {
         let (a, b) = two(balls, contact.a, contact.b);
@@ -530,7 +517,7 @@ fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [B
         if dx * dx + dy * dy >= closest * closest {
             continue; // the common case, without a square root
         }
-        let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, contact.state.normal);
+        let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, || contact.state.normal);
         if separation < -allowed {
             // Each ball moves its share: the lighter one more.
             let push = -(separation + allowed) * PUSH * contact.state.mass;
@@ -558,8 +545,6 @@ impl ContactState {
         normal: [f64; 2],
         separation: f64,
         restitution: f64,
-        approach: f64,
-        rest_speed: f64,
         mass: f64,
         key: u64,
     ) -> ContactState {
@@ -567,37 +552,23 @@ impl ContactState {
             normal,
             separation,
             restitution,
-            rebound: rebound(restitution, approach, rest_speed),
             mass,
             impulse: 0.0,
-            previous: 0.0,
             key,
         }
-    }
-
-    /// Starts a sub-step: the impulse to push with again, which becomes the running total.
-    /// The lesser of the last two sub-steps' totals: a resting load is the same in both, an
-    /// impact is a spike in one, and pushing it again would bounce the balls apart.
-    fn carry(&mut self) -> f64 {
-        let carried = self.least();
-        self.previous = self.impulse;
-        self.impulse = carried;
-        carried
-    }
-
-    /// The lesser of the last two sub-steps' totals.
-    fn least(&self) -> f64 {
-        self.impulse.min(self.previous)
     }
 
     /// The velocity pass for one contact whose relative normal speed is `speed` (negative:
     /// closing): updates the running total and returns the impulse to apply now.
     fn solve(&mut self, speed: f64, sub: SubStep) -> f64 {
-        let bounces = self.rebound > 0.0 && self.separation + speed * sub.h < 0.0;
+        // It bounces if it touches within the sub-step closing fast enough for its rebound,
+        // `e` times the approach speed now, to beat the rest speed. Now, not when the contact
+        // was found: a ball struck in this step passes the blow on to the next (a resting
+        // ball hit from above bounces off the floor and throws the striker back up).
+        let rebound = -self.restitution * speed;
+        let bounces = rebound > sub.rest_speed && self.separation + speed * sub.h < 0.0;
         let target = if bounces {
-            // Never faster than `e` times the approach now: other contacts may have slowed
-            // it since the contact was found, and a bounce must not add energy.
-            std::mem::take(&mut self.rebound).min(-self.restitution * speed)
+            rebound
         } else {
             // Resting, or speculative: close by no more than the gap within the sub-step.
             -self.separation.max(0.0) / sub.h
@@ -629,17 +600,6 @@ impl FixedContact {
     }
 }
 
-/// The parting speed a contact closing at `approach` (negative: closing) bounces to, or 0 if
-/// that would be below `rest_speed`.
-fn rebound(restitution: f64, approach: f64, rest_speed: f64) -> f64 {
-    let rebound = -restitution * approach;
-    if rebound > rest_speed {
-        rebound
-    } else {
-        0.0
-    }
-}
-
 /// Mass of a ball: radius², as in ball-ball collisions (flat discs of equal density).
 fn mass(ball: &Ball) -> f64 {
     ball.radius * ball.radius
@@ -650,14 +610,19 @@ fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
 }
 
 /// The gap between two balls whose radii add up to `reach`, and the normal from `a` to `b`
-/// (`fallback` if their centres coincide).
-fn pair_gap(a: &Ball, b: &Ball, reach: f64, fallback: [f64; 2]) -> (f64, [f64; 2]) {
+/// (`fallback()` if their centres coincide).
+fn pair_gap(
+    a: &Ball,
+    b: &Ball,
+    reach: f64,
+    fallback: impl FnOnce() -> [f64; 2],
+) -> (f64, [f64; 2]) {
     let (dx, dy) = (b.x - a.x, b.y - a.y);
     let distance = (dx * dx + dy * dy).sqrt();
     if distance > 0.0 {
         (distance - reach, [dx / distance, dy / distance])
     } else {
-        (-reach, fallback)
+        (-reach, fallback())
     }
 }
 
