@@ -2,9 +2,10 @@
 //! overlap, a pyramid stands, resting contacts do not bounce, momentum and energy obey their
 //! laws. `docs/contacts.md` has the figures these bounds come from.
 
-use bouncing_ball::physics::accuracy::{lowest_pile, pile_height, rms_speed};
+use bouncing_ball::physics::accuracy::{
+    deepest_overlap, kinetic_energy, lowest_pile, pile_height, rms_speed,
+};
 use bouncing_ball::physics::ball::Ball;
-use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
 use bouncing_ball::scene::file::{pile, preset};
 use bouncing_ball::{BallSpec, Scene};
 use common::white_ball as spec;

@@ -36,7 +36,6 @@
 use std::ops::Range;
 
 use super::ball::Ball;
-use super::collisions::coincident_normal;
 use super::effects::Effects;
 use super::exact::REST_SPEED;
 use super::grid::Grid;
@@ -47,6 +46,9 @@ use super::work::{tally, Work};
 /// The gravity [`REST_SPEED`] was derived for, px/frame²: the rest speed scales with gravity,
 /// so a scene without gravity has none and every approach bounces.
 const LESSON_GRAVITY: f64 = 0.5;
+
+/// The golden angle, radians: successive multiples of it spread evenly round a circle.
+const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;
 
 /// Contacts are found this share of a radius before they could touch within the step, so a
 /// resting contact keeps its warm start from step to step.
@@ -600,7 +602,7 @@ impl FixedContact {
     }
 }
 
-/// Mass of a ball: radius², as in ball-ball collisions (flat discs of equal density).
+/// Mass of a ball: radius² (flat discs of equal density).
 fn mass(ball: &Ball) -> f64 {
     ball.radius * ball.radius
 }
@@ -630,4 +632,13 @@ fn pair_gap(
 fn two(balls: &mut [Ball], a: usize, b: usize) -> (&mut Ball, &mut Ball) {
     let (head, tail) = balls.split_at_mut(b);
     (&mut head[a], &mut tail[0])
+}
+
+/// The normal for two balls at exactly the same centre, where the line between centres has
+/// no direction. Any fixed direction would separate a pair, but a heap spawned on one spot
+/// would then spread along a single line; so ball `j` leaves at `j` golden angles, which
+/// fans successive balls out evenly round the circle, and depends on nothing but `j`.
+fn coincident_normal(j: usize) -> (f64, f64) {
+    let angle = GOLDEN_ANGLE * j as f64;
+    (angle.cos(), angle.sin())
 }
