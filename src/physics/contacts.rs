@@ -16,7 +16,11 @@
 //!    *speculative*: it only forbids closing by more than the gap. The solver works on a copy
 //!    of the balls in the grid's order, and a ball that can touch nothing takes the whole step
 //!    at once, as in the lesson.
-//! 2. Then, for the others, `iterations` times, for a sub-step `h` of the step:
+//! 2. **Islands**: the balls with contacts fall into islands, balls joined by pair contacts
+//!    directly or through others. Islands share no ball, so each is solved on its own, all
+//!    its sub-steps at once, while its balls are in the cache (the numbers are the same as
+//!    one sweep over every contact). Then, for each island, `iterations` times, for a
+//!    sub-step `h` of the step:
 //!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
 //!    - **Warm start** (under gravity only): each contact pushes again with its total impulse
 //!      of the sub-step before (the previous step's, at first). A stack that stood then
@@ -24,8 +28,8 @@
 //!      pass. A bounce is not carried: it is over once the balls part.
 //!    - **Velocity pass** (Gauss–Seidel): contact after contact, the impulse that brings its
 //!      relative normal speed to its target, added to its running total, which is never
-//!      negative (contacts push, never pull). A contact closing faster than the rest speed
-//!      that touches within `h` bounces: the target is `e` times the approach speed. Slower,
+//!      negative (contacts push, never pull). A contact that touches within `h` bounces if
+//!      `e` times its approach speed now beats the rest speed: that is its target. Slower,
 //!      it stops (resting balls do not bounce, so a pile settles instead of buzzing).
 //!    - **Fly** `h` with the solved velocities.
 //!    - **Position pass**: overlap beyond a small slop is partly pushed out, moving positions
