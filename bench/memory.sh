@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Peak memory and wall time against the number of frames: the release binary, whole
-# process, on the lesson's scene (the ball comes to rest, so late frames are one pixel)
+# process, on the lesson's scene (the ball comes to rest, so late frames merge into one)
 # and on the elastic preset (it bounces forever, so every frame has real work).
 # Memory should stay flat and time grow in step with the frames. Wall times include
 # starting /usr/bin/time itself; bench/benches/ and examples/bench_vs_python.rs time more finely.

@@ -2,9 +2,10 @@
 //! overlap, a pyramid stands, resting contacts do not bounce, momentum and energy obey their
 //! laws. `docs/contacts.md` has the figures these bounds come from.
 
-use bouncing_ball::physics::accuracy::{lowest_pile, pile_height, rms_speed};
+use bouncing_ball::physics::accuracy::{
+    deepest_overlap, kinetic_energy, lowest_pile, pile_height, rms_speed,
+};
 use bouncing_ball::physics::ball::Ball;
-use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
 use bouncing_ball::scene::file::{pile, preset};
 use bouncing_ball::{BallSpec, Scene};
 use common::white_ball as spec;
@@ -22,45 +23,59 @@ fn all_finite(balls: &[Ball]) -> bool {
         .all(|b| [b.x, b.y, b.vx, b.vy].iter().all(|v| v.is_finite()))
 }
 
+/// Spawns of each pile that the tests drop.
+const SEEDS: [u64; 4] = [1, 2, 3, 4];
+
 /// Drops `count` balls of `radius` into the 320 × 240 box (gravity 0.5, walls 0.5,
-/// restitution 0.5, default settings) and checks the heap after 10,000 frames.
-fn assert_pile_rests(count: usize, radius: f64) {
-    let scene = pile(count, radius, 1).unwrap();
+/// restitution 0.5, default settings), spawned from each of [`SEEDS`], and checks each heap
+/// after 10,000 frames.
+fn assert_piles_rest(count: usize, radius: f64) {
+    for seed in SEEDS {
+        assert_pile_rests(count, radius, seed);
+    }
+}
+
+fn assert_pile_rests(count: usize, radius: f64, seed: u64) {
+    let scene = pile(count, radius, seed).unwrap();
     let mut simulation = scene.simulation();
     let (mut deepest, mut fastest) = (0.0f64, 0.0f64);
     for frame in 1..=FRAMES {
         simulation.step();
         let balls = simulation.balls();
-        assert!(all_finite(balls), "frame {frame}: NaN or infinity");
+        assert!(
+            all_finite(balls),
+            "seed {seed}, frame {frame}: NaN or infinity"
+        );
         if frame > FRAMES - SETTLED {
             deepest = deepest.max(deepest_overlap(balls) / radius);
             fastest = fastest.max(rms_speed(balls));
         }
     }
+    eprintln!("{count} balls, seed {seed}: deepest {deepest:.4} r, fastest {fastest:.2e}");
     let height = pile_height(simulation.balls(), f64::from(scene.height));
     let bound = lowest_pile(count, radius, f64::from(scene.width));
     assert!(
         height >= bound,
-        "{count} balls: no heap without overlaps is lower than {bound:.1} px, this one is {height:.1} px"
+        "{count} balls, seed {seed}: no heap without overlaps is lower than {bound:.1} px, this one is {height:.1} px"
     );
     assert!(
         deepest <= 0.05,
-        "{count} balls: deepest overlap in the last {SETTLED} frames expected at most 0.05 r, got {deepest:.4} r"
+        "{count} balls, seed {seed}: deepest overlap in the last {SETTLED} frames expected at most 0.05 r, got {deepest:.4} r"
     );
     assert!(
         fastest <= 0.01,
-        "{count} balls: rms speed in the last {SETTLED} frames expected at most 0.01 px/frame, got {fastest:.2e}"
+        "{count} balls, seed {seed}: rms speed in the last {SETTLED} frames expected at most 0.01 px/frame, got {fastest:.2e}"
     );
 }
 
 #[test]
 fn a_pile_of_150_balls_comes_to_rest_without_sinking_into_itself() {
-    assert_pile_rests(150, 6.0);
+    assert_piles_rest(150, 6.0);
 }
 
 #[test]
 fn a_pile_of_400_balls_comes_to_rest_without_sinking_into_itself() {
-    assert_pile_rests(400, 4.0);
+    assert_piles_rest(400, 4.0);
 }
 
 #[test]
@@ -82,9 +97,6 @@ fn the_pyramid_stands_still_for_10000_frames() {
 
 /// A ball dropped onto a ball resting on the floor, from `drop` px above contact: the gap
 /// between them each frame after they first touch, and the top ball's last speed.
-///
-/// (A fast ball dropped this way does not bounce either: one velocity pass per sub-step
-/// hands its impact to the ball below, which the floor stops; see docs/contacts.md.)
 fn drop_onto_resting_ball(drop: f64) -> (Vec<f64>, f64) {
     let scene = Scene {
         balls: vec![
@@ -121,6 +133,49 @@ fn a_slow_contact_on_a_resting_ball_stays_in_contact_and_rests() {
         "a slow contact must not bounce: after touching the balls parted by {parted:.4} px"
     );
     assert!(last_speed.abs() < 1e-6, "and it rests: vy {last_speed:.2e}");
+}
+
+/// Drops a ball from `drop` px above contact onto an equal ball resting on the floor, with
+/// elastic balls and floor damping `floor`: the top ball's fastest fall before the impact
+/// and fastest rise after it, px/frame.
+fn fall_and_rebound(drop: f64, floor: f64) -> (f64, f64) {
+    let scene = Scene {
+        balls: vec![
+            spec(50.0, 190.0, 0.0, 0.0, 10.0),
+            spec(50.0, 170.0 - drop, 0.0, 0.0, 10.0),
+        ],
+        gravity: Some([0.0, 0.5]),
+        walls: Some(floor),
+        ball_collisions: Some(1.0),
+        ..Scene::empty(100, 200)
+    };
+    let mut simulation = scene.simulation();
+    let (mut fall, mut rise) = (0.0f64, 0.0f64);
+    for _ in 0..60 {
+        simulation.step();
+        let top = &simulation.balls()[1];
+        if rise == 0.0 && top.vy >= 0.0 {
+            fall = fall.max(top.vy);
+        } else {
+            rise = rise.max(-top.vy);
+        }
+    }
+    (fall, rise)
+}
+
+#[test]
+fn a_fast_ball_dropped_on_a_resting_one_bounces_back_up() {
+    // Equal balls, elastic: the blow passes to the bottom ball, the floor sends it back up
+    // at `f` times its speed, and it passes that to the top ball. So the top ball leaves at
+    // `f` times the speed it came in with, less at most one frame of gravity (0.5).
+    for floor in [1.0, 0.5] {
+        let (fall, rise) = fall_and_rebound(100.0, floor);
+        let expected = floor * fall;
+        assert!(
+            (rise - expected).abs() <= 0.5,
+            "floor {floor}: fell at {fall:.3} px/frame, expected to rise at {expected:.3}, rose at {rise:.3}"
+        );
+    }
 }
 
 #[test]

@@ -1,9 +1,8 @@
 //! Exact mode for every contact: balls meet at the moment they touch (event-driven), floors
 //! are met at the moment of impact, nothing is clamped afterwards.
 
-use bouncing_ball::physics::accuracy::lesson_effects;
+use bouncing_ball::physics::accuracy::{deepest_overlap, kinetic_energy, lesson_effects};
 use bouncing_ball::physics::ball::Ball;
-use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::events::system::MAX_EVENTS_PER_BALL;
 use bouncing_ball::physics::floor::Floor;

@@ -359,7 +359,7 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
 }
 
 mod ball_ball {
-    use bouncing_ball::physics::collisions::{deepest_overlap, kinetic_energy};
+    use bouncing_ball::physics::accuracy::{deepest_overlap, kinetic_energy};
     use bouncing_ball::physics::contacts::SLOP;
     use bouncing_ball::scene::random::Random;
     use bouncing_ball::Scene;

@@ -4,10 +4,10 @@
 //!
 //! First the layouts, each with the plain LZW coder:
 //! - the changed rectangle as it is; with its mixed stretches of unchanged pixels
-//!   transparent; or with every unchanged pixel transparent ([`super::transparency`]). A
-//!   marked layout is tried when an index is free to mean transparent and the marking leaves
-//!   at least [`MIN_RUNS_SAVED`] fewer runs of one index (else it is skipped); marking every
-//!   unchanged pixel only after marking mixed stretches was tried;
+//!   transparent; or with every unchanged pixel transparent ([`super::transparency`]). The
+//!   mixed-stretch layout is tried when an index is free to mean transparent and the marking
+//!   leaves at least [`MIN_RUNS_SAVED`] fewer runs of one index (else it is skipped); the
+//!   every-pixel layout only after the mixed-stretch one was tried;
 //! - each in normal or interlaced row order ([`super::interlace`]).
 //!
 //! Each also with a full dictionary kept to the end ([`Choices::KEEP_FULL`]) instead of
@@ -90,17 +90,24 @@ impl Coder {
                 (_, Some((under, index))) => {
                     let marked = match layout {
                         Layout::MixedStretches => {
-                            mark_mixed_stretches(current, under, index, &mut self.layout)
+                            let marked =
+                                mark_mixed_stretches(current, under, index, &mut self.layout);
+                            if !saves_runs(runs_as_is, runs(&self.layout)) {
+                                continue;
+                            }
+                            mixed_tried = true;
+                            marked
                         }
                         // Where marking mixed stretches does not pay, marking more never did.
+                        // (Marking every unchanged pixel seldom removes runs; it pays by making
+                        // the rectangle's runs mostly one index, which LZW repeats well.)
                         _ if !mixed_tried => continue,
                         _ => mark_unchanged(current, under, index, &mut self.layout),
                     };
                     // Nothing marked is the layout already tried.
-                    if marked == 0 || !saves_runs(runs_as_is, runs(&self.layout)) {
+                    if marked == 0 {
                         continue;
                     }
-                    mixed_tried |= layout == Layout::MixedStretches;
                     largest(&self.layout).max(index)
                 }
             };

@@ -161,3 +161,24 @@ pub fn rms_speed(balls: &[Ball]) -> f64 {
     let sum: f64 = balls.iter().map(|b| b.vx * b.vx + b.vy * b.vy).sum();
     (sum / balls.len().max(1) as f64).sqrt()
 }
+
+/// Total kinetic energy, `Σ ½·m·|v|²` with masses ∝ radius² (flat discs of equal density): it never rises in a
+/// collision with restitution ≤ 1 (the tests and the soak run check it).
+pub fn kinetic_energy(balls: &[Ball]) -> f64 {
+    balls
+        .iter()
+        .map(|b| 0.5 * b.radius * b.radius * (b.vx * b.vx + b.vy * b.vy))
+        .sum()
+}
+
+/// How deep the most overlapping pair overlaps, px (0 if none does), checking every pair:
+/// a measure for tests and the soak run, never used to step.
+pub fn deepest_overlap(balls: &[Ball]) -> f64 {
+    let mut deepest = 0.0f64;
+    for (i, a) in balls.iter().enumerate() {
+        for b in &balls[i + 1..] {
+            deepest = deepest.max(a.radius + b.radius - (b.x - a.x).hypot(b.y - a.y));
+        }
+    }
+    deepest
+}

@@ -16,16 +16,20 @@
 //!    *speculative*: it only forbids closing by more than the gap. The solver works on a copy
 //!    of the balls in the grid's order, and a ball that can touch nothing takes the whole step
 //!    at once, as in the lesson.
-//! 2. Then, for the others, `iterations` times, for a sub-step `h` of the step:
+//! 2. **Islands**: the balls with contacts fall into islands, balls joined by pair contacts
+//!    directly or through others. Islands share no ball, so each is solved on its own, all
+//!    its sub-steps at once, while its balls are in the cache (the numbers are the same as
+//!    one sweep over every contact). Then, for each island, `iterations` times, for a
+//!    sub-step `h` of the step:
 //!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
-//!    - **Warm start** (under gravity only): each contact pushes again with the lesser of its
-//!      last two sub-steps' impulses (the previous step's, at first). A stack that stood then
+//!    - **Warm start** (under gravity only): each contact pushes again with its total impulse
+//!      of the sub-step before (the previous step's, at first). A stack that stood then
 //!      stands now, instead of its weight having to travel up through it again, one ball per
-//!      pass; an impact, a spike in one sub-step, is not pushed twice.
+//!      pass. A bounce is not carried: it is over once the balls part.
 //!    - **Velocity pass** (Gauss–Seidel): contact after contact, the impulse that brings its
 //!      relative normal speed to its target, added to its running total, which is never
-//!      negative (contacts push, never pull). A contact closing faster than the rest speed
-//!      that touches within `h` bounces: the target is `e` times the approach speed. Slower,
+//!      negative (contacts push, never pull). A contact that touches within `h` bounces if
+//!      `e` times its approach speed now beats the rest speed: that is its target. Slower,
 //!      it stops (resting balls do not bounce, so a pile settles instead of buzzing).
 //!    - **Fly** `h` with the solved velocities.
 //!    - **Position pass**: overlap beyond a small slop is partly pushed out, moving positions
@@ -33,8 +37,9 @@
 //!
 //! Everything happens in a fixed order (the grid's), so the same balls give the same bytes.
 
+use std::ops::Range;
+
 use super::ball::Ball;
-use super::collisions::coincident_normal;
 use super::effects::Effects;
 use super::exact::REST_SPEED;
 use super::grid::Grid;
@@ -45,6 +50,9 @@ use super::work::{tally, Work};
 /// The gravity [`REST_SPEED`] was derived for, px/frame²: the rest speed scales with gravity,
 /// so a scene without gravity has none and every approach bounces.
 const LESSON_GRAVITY: f64 = 0.5;
+
+/// The golden angle, radians: successive multiples of it spread evenly round a circle.
+const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;
 
 /// Contacts are found this share of a radius before they could touch within the step, so a
 /// resting contact keeps its warm start from step to step.
@@ -73,6 +81,8 @@ struct SubStep {
     /// from one sub-step to the next: without it every contact's push is an impact, and
     /// pushing again would only add energy for the next pass to take back.
     loaded: bool,
+    /// Below this parting speed, px/frame, a contact does not bounce.
+    rest_speed: f64,
 }
 
 /// A contact between balls `a` and `b`, the normal pointing from `a` to `b`.
@@ -104,16 +114,10 @@ struct ContactState {
     /// Gap at the start of the sub-step, px (negative: overlap).
     separation: f64,
     restitution: f64,
-    /// The relative normal speed a bounce leaves it with, px/frame: `e` times the approach
-    /// speed when the contact was found, if that is above the rest speed; else 0. Spent
-    /// once it bounces.
-    rebound: f64,
     /// `1 / (1/m_a + 1/m_b)`: the impulse that changes the relative normal speed by 1.
     mass: f64,
     /// Total impulse along the normal in this sub-step, never negative.
     impulse: f64,
-    /// The total of the sub-step before.
-    previous: f64,
     /// Names the contact from step to step, for the warm start.
     key: u64,
 }
@@ -135,9 +139,48 @@ pub struct ContactSolver {
     /// `order[k]` is the scene's index of `local[k]`; `slot[i]` is where ball `i` is in `local`.
     order: Vec<usize>,
     slot: Vec<usize>,
-    /// Whether each ball (of `local`) has a contact this step, and the list of those that do.
-    touching: Vec<bool>,
+    /// The balls (of `local`) with a contact this step, island by island.
     active: Vec<usize>,
+    /// Where each island's balls are in `active` and its contacts in `pairs` and `fixed`.
+    islands: Vec<Island>,
+    /// Scratch space for finding the islands: the union–find tree, each ball's island, and
+    /// the contacts in the order found.
+    parent: Vec<usize>,
+    island_of: Vec<usize>,
+    spare_pairs: Vec<PairContact>,
+    spare_fixed: Vec<FixedContact>,
+}
+
+/// A group of balls joined by pair contacts, directly or through others, that touches no
+/// ball outside it this step: what happens in one island cannot change another.
+#[derive(Clone, Debug, Default)]
+struct Island {
+    balls: Range<usize>,
+    pairs: Range<usize>,
+    fixed: Range<usize>,
+}
+
+impl Island {
+    fn ranges(&mut self) -> [&mut Range<usize>; 3] {
+        [&mut self.balls, &mut self.pairs, &mut self.fixed]
+    }
+
+    fn starts(&self) -> [usize; 3] {
+        [self.balls.start, self.pairs.start, self.fixed.start]
+    }
+}
+
+/// `island_of` for a ball without contacts.
+const NO_ISLAND: usize = usize::MAX;
+
+/// The ball that names `ball`'s island in the union–find tree `parent` (the island's first
+/// ball), halving the path on the way so later searches are short.
+fn root(parent: &mut [usize], mut ball: usize) -> usize {
+    while parent[ball] != ball {
+        parent[ball] = parent[parent[ball]];
+        ball = parent[ball];
+    }
+    ball
 }
 
 impl ContactSolver {
@@ -153,8 +196,12 @@ impl ContactSolver {
             local: Vec::new(),
             order: Vec::new(),
             slot: Vec::new(),
-            touching: Vec::new(),
             active: Vec::new(),
+            islands: Vec::new(),
+            parent: Vec::new(),
+            island_of: Vec::new(),
+            spare_pairs: Vec::new(),
+            spare_fixed: Vec::new(),
         }
     }
 
@@ -165,38 +212,45 @@ impl ContactSolver {
         let iterations = motion.iterations;
         let forces = Forces::new(effects).split(steps * iterations);
         let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
-        let rest_speed = REST_SPEED * gravity / LESSON_GRAVITY;
         let sub = SubStep {
             h: forces.dt,
             loaded: gravity > 0.0,
+            rest_speed: REST_SPEED * gravity / LESSON_GRAVITY,
         };
         let dt = 1.0 / f64::from(steps);
         for _ in 0..steps {
             tally(Work::Contacts);
-            self.find(scene_balls, effects, dt, rest_speed);
+            self.find(scene_balls, effects, dt);
             self.recall();
-            self.sort_out_touching(scene_balls.len());
+            self.sort_into_islands(scene_balls.len());
             // The solver works on its own copy of the balls, in the grid's order: contacts
             // then touch balls close together in memory, which keeps 100,000 balls fast.
             let mut local = std::mem::take(&mut self.local);
             let balls = &mut local[..];
             // A ball that can touch nothing in this step takes it in one go, as in the lesson.
-            for (ball, &touching) in balls.iter_mut().zip(&self.touching) {
-                if !touching {
+            for (ball, &island) in balls.iter_mut().zip(&self.island_of) {
+                if island == NO_ISLAND {
                     motion.integrator.step(ball, &whole);
                 }
             }
-            for _ in 0..iterations {
-                for &i in &self.active {
-                    motion.integrator.kick_before(&mut balls[i], &forces);
+            // Islands share no ball, so each is solved on its own, all its sub-steps at once,
+            // while its few balls and contacts are in the cache.
+            for island in &self.islands {
+                let active = &self.active[island.balls.clone()];
+                let pairs = &mut self.pairs[island.pairs.clone()];
+                let fixed = &mut self.fixed[island.fixed.clone()];
+                for _ in 0..iterations {
+                    for &i in active {
+                        motion.integrator.kick_before(&mut balls[i], &forces);
+                    }
+                    warm_start(pairs, fixed, balls);
+                    solve_velocities(pairs, fixed, balls, sub);
+                    for &i in active {
+                        motion.integrator.fly(&mut balls[i], &forces, forces.dt);
+                        motion.integrator.kick_after(&mut balls[i], &forces);
+                    }
+                    solve_positions(pairs, fixed, balls);
                 }
-                self.warm_start(balls);
-                self.solve_velocities(balls, sub);
-                for &i in &self.active {
-                    motion.integrator.fly(&mut balls[i], &forces, forces.dt);
-                    motion.integrator.kick_after(&mut balls[i], &forces);
-                }
-                self.solve_positions(balls);
             }
             for (copy, &i) in local.iter().zip(&self.order) {
                 let ball = &mut scene_balls[i];
@@ -212,7 +266,7 @@ impl ContactSolver {
 
     /// This step's contacts: ball pairs from the grid, in its order; then each ball's walls
     /// and floors, in ball order; each only if it can touch within the step `dt`.
-    fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64, rest_speed: f64) {
+    fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
         let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
         // How far gravity alone can move a ball in the step.
         let fall = gravity * dt * dt;
@@ -254,8 +308,11 @@ impl ContactSolver {
             let reach = ball_a.radius + ball_b.radius;
             let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
             let mass = mass_a * mass_b / (mass_a + mass_b);
-            let (nx, ny) = coincident_normal(j);
-            let (separation, normal) = pair_gap(ball_a, ball_b, reach, [nx, ny]);
+            let coincident = || {
+                let (nx, ny) = coincident_normal(j);
+                [nx, ny]
+            };
+            let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
             let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
             // Both balls fall alike, but a ball pushed from above can close the gap by as
             // much as gravity moves it.
@@ -266,15 +323,7 @@ impl ContactSolver {
                 a,
                 b,
                 reach,
-                state: ContactState::new(
-                    normal,
-                    separation,
-                    self.restitution,
-                    approach,
-                    rest_speed,
-                    mass,
-                    key,
-                ),
+                state: ContactState::new(normal, separation, self.restitution, mass, key),
                 inverse_a: 1.0 / mass_a,
                 inverse_b: 1.0 / mass_b,
             });
@@ -296,8 +345,6 @@ impl ContactSolver {
                             normal,
                             separation,
                             restitution,
-                            approach,
-                            rest_speed,
                             mass(ball),
                             (i as u64) << 32 | (u64::from(u32::MAX) - id),
                         ),
@@ -330,19 +377,75 @@ impl ContactSolver {
         }
     }
 
-    /// Marks the balls with at least one contact this step, and lists them in order.
-    fn sort_out_touching(&mut self, count: usize) {
-        self.touching.clear();
-        self.touching.resize(count, false);
+    /// Groups the balls with a contact this step into islands — balls joined by pair
+    /// contacts, directly or through others — and lists each island's balls and contacts
+    /// together, keeping their order within the island.
+    fn sort_into_islands(&mut self, count: usize) {
+        // Union–find: every ball starts as its own island; each pair contact joins two.
+        let parent = &mut self.parent;
+        parent.clear();
+        parent.extend(0..count);
         for contact in &self.pairs {
-            self.touching[contact.a] = true;
-            self.touching[contact.b] = true;
+            let (a, b) = (root(parent, contact.a), root(parent, contact.b));
+            parent[a.max(b)] = a.min(b);
+        }
+        // Number the islands of the balls with a contact in the order of their first ball;
+        // the rest stay at `NO_ISLAND`. Then count each island's balls and contacts.
+        let island_of = &mut self.island_of;
+        island_of.clear();
+        island_of.resize(count, NO_ISLAND);
+        let with_contact = self.pairs.iter().flat_map(|c| [c.a, c.b]);
+        for ball in with_contact.chain(self.fixed.iter().map(|c| c.ball)) {
+            island_of[ball] = 0;
+        }
+        self.islands.clear();
+        for ball in 0..count {
+            if island_of[ball] != NO_ISLAND {
+                let first = root(parent, ball);
+                if first == ball {
+                    island_of[ball] = self.islands.len();
+                    self.islands.push(Island::default());
+                } else {
+                    island_of[ball] = island_of[first]; // `first < ball`: numbered already
+                }
+                self.islands[island_of[ball]].balls.end += 1;
+            }
+        }
+        for contact in &self.pairs {
+            self.islands[island_of[contact.a]].pairs.end += 1;
         }
         for contact in &self.fixed {
-            self.touching[contact.ball] = true;
+            self.islands[island_of[contact.ball]].fixed.end += 1;
         }
-        self.active.clear();
-        self.active.extend((0..count).filter(|&i| self.touching[i]));
+        // Turn the counts into ranges, one island after another.
+        let mut ends = [0; 3];
+        for island in &mut self.islands {
+            for (range, end) in island.ranges().into_iter().zip(&mut ends) {
+                *range = *end..*end + range.end;
+                *end = range.end;
+            }
+        }
+        // Place each ball and contact at its island's next free place (a counting sort).
+        let mut next: Vec<[usize; 3]> = self.islands.iter().map(|i| i.starts()).collect();
+        let mut place = |island: usize, kind: usize| {
+            let place = next[island][kind];
+            next[island][kind] += 1;
+            place
+        };
+        self.active.resize(ends[0], 0);
+        for (ball, &island) in island_of.iter().enumerate() {
+            if island != NO_ISLAND {
+                self.active[place(island, 0)] = ball;
+            }
+        }
+        self.spare_pairs.clone_from(&self.pairs);
+        for contact in &self.spare_pairs {
+            self.pairs[place(island_of[contact.a], 1)] = *contact;
+        }
+        self.spare_fixed.clone_from(&self.fixed);
+        for contact in &self.spare_fixed {
+            self.fixed[place(island_of[contact.ball], 2)] = *contact;
+        }
     }
 
     /// Gives each contact the impulse it ended the last step with (0 if it is new).
@@ -353,76 +456,6 @@ impl ContactSolver {
             state.impulse = remembered
                 .binary_search_by_key(&state.key, |&(key, _)| key)
                 .map_or(0.0, |found| remembered[found].1);
-            state.previous = state.impulse;
-        }
-    }
-
-    /// Applies each contact's impulse of the last sub-step again, and measures its gap anew.
-    fn warm_start(&mut self, balls: &mut [Ball]) {
-        for contact in &mut self.pairs {
-            let (a, b) = two(balls, contact.a, contact.b);
-            let (separation, normal) = pair_gap(a, b, contact.reach, contact.state.normal);
-            (contact.state.separation, contact.state.normal) = (separation, normal);
-            let carried = contact.state.carry();
-            contact.push_velocities(a, b, carried);
-        }
-        for contact in &mut self.fixed {
-            let ball = &mut balls[contact.ball];
-            contact.state.separation = contact.gap(ball);
-            let impulse = contact.state.carry() / contact.state.mass;
-            ball.vx += impulse * contact.state.normal[0];
-            ball.vy += impulse * contact.state.normal[1];
-        }
-    }
-
-    /// One Gauss–Seidel pass over every contact's velocity.
-    fn solve_velocities(&mut self, balls: &mut [Ball], sub: SubStep) {
-        for contact in &mut self.pairs {
-            let (a, b) = two(balls, contact.a, contact.b);
-            let [nx, ny] = contact.state.normal;
-            let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
-            let change = contact.state.solve(speed, sub);
-            contact.push_velocities(a, b, change);
-        }
-        for contact in &mut self.fixed {
-            let ball = &mut balls[contact.ball];
-            let [nx, ny] = contact.state.normal;
-            let change = contact.state.solve(ball.vx * nx + ball.vy * ny, sub) / contact.state.mass;
-            ball.vx += change * nx;
-            ball.vy += change * ny;
-        }
-    }
-
-    /// One Gauss–Seidel pass that pushes overlapping contacts partly apart, positions only.
-    fn solve_positions(&mut self, balls: &mut [Ball]) {
-        for contact in &self.pairs {
-            let (a, b) = two(balls, contact.a, contact.b);
-            let allowed = SLOP * contact.reach / 2.0;
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let closest = contact.reach - allowed;
-            if dx * dx + dy * dy >= closest * closest {
-                continue; // the common case, without a square root
-            }
-            let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, contact.state.normal);
-            if separation < -allowed {
-                // Each ball moves its share: the lighter one more.
-                let push = -(separation + allowed) * PUSH * contact.state.mass;
-                let (share_a, share_b) = (push * contact.inverse_a, push * contact.inverse_b);
-                a.x -= share_a * nx;
-                a.y -= share_a * ny;
-                b.x += share_b * nx;
-                b.y += share_b * ny;
-            }
-        }
-        for contact in &self.fixed {
-            let ball = &mut balls[contact.ball];
-            let separation = contact.gap(ball);
-            let allowed = SLOP * ball.radius;
-            if separation < -allowed {
-                let push = -(separation + allowed) * PUSH;
-                ball.x += push * contact.state.normal[0];
-                ball.y += push * contact.state.normal[1];
-            }
         }
     }
 
@@ -433,10 +466,83 @@ impl ContactSolver {
         self.remembered.extend(
             states
                 .chain(self.fixed.iter().map(|c| &c.state))
-                .map(|state| (state.key, state.least()))
+                .map(|state| (state.key, state.impulse))
                 .filter(|&(_, impulse)| impulse > 0.0),
         );
         self.remembered.sort_unstable_by_key(|&(key, _)| key);
+    }
+}
+
+/// Applies each contact's impulse of the last sub-step again, and measures its gap anew.
+fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut [Ball]) {
+    for contact in pairs.iter_mut() {
+        let (a, b) = two(balls, contact.a, contact.b);
+        let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
+        (contact.state.separation, contact.state.normal) = (separation, normal);
+        contact.push_velocities(a, b, contact.state.impulse);
+    }
+    for contact in fixed.iter_mut() {
+        let ball = &mut balls[contact.ball];
+        contact.state.separation = contact.gap(ball);
+        let impulse = contact.state.impulse / contact.state.mass;
+        ball.vx += impulse * contact.state.normal[0];
+        ball.vy += impulse * contact.state.normal[1];
+    }
+}
+
+/// One Gauss–Seidel pass over every contact's velocity.
+fn solve_velocities(
+    pairs: &mut [PairContact],
+    fixed: &mut [FixedContact],
+    balls: &mut [Ball],
+    sub: SubStep,
+) {
+    for contact in pairs.iter_mut() {
+        let (a, b) = two(balls, contact.a, contact.b);
+        let [nx, ny] = contact.state.normal;
+        let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
+        let change = contact.state.solve(speed, sub);
+        contact.push_velocities(a, b, change);
+    }
+    for contact in fixed.iter_mut() {
+        let ball = &mut balls[contact.ball];
+        let [nx, ny] = contact.state.normal;
+        let change = contact.state.solve(ball.vx * nx + ball.vy * ny, sub) / contact.state.mass;
+        ball.vx += change * nx;
+        ball.vy += change * ny;
+    }
+}
+
+/// One Gauss–Seidel pass that pushes overlapping contacts partly apart, positions only.
+fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [Ball]) {
+    for contact in pairs {
+        let (a, b) = two(balls, contact.a, contact.b);
+        let allowed = SLOP * contact.reach / 2.0;
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        let closest = contact.reach - allowed;
+        if dx * dx + dy * dy >= closest * closest {
+            continue; // the common case, without a square root
+        }
+        let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, || contact.state.normal);
+        if separation < -allowed {
+            // Each ball moves its share: the lighter one more.
+            let push = -(separation + allowed) * PUSH * contact.state.mass;
+            let (share_a, share_b) = (push * contact.inverse_a, push * contact.inverse_b);
+            a.x -= share_a * nx;
+            a.y -= share_a * ny;
+            b.x += share_b * nx;
+            b.y += share_b * ny;
+        }
+    }
+    for contact in fixed {
+        let ball = &mut balls[contact.ball];
+        let separation = contact.gap(ball);
+        let allowed = SLOP * ball.radius;
+        if separation < -allowed {
+            let push = -(separation + allowed) * PUSH;
+            ball.x += push * contact.state.normal[0];
+            ball.y += push * contact.state.normal[1];
+        }
     }
 }
 
@@ -445,8 +551,6 @@ impl ContactState {
         normal: [f64; 2],
         separation: f64,
         restitution: f64,
-        approach: f64,
-        rest_speed: f64,
         mass: f64,
         key: u64,
     ) -> ContactState {
@@ -454,37 +558,23 @@ impl ContactState {
             normal,
             separation,
             restitution,
-            rebound: rebound(restitution, approach, rest_speed),
             mass,
             impulse: 0.0,
-            previous: 0.0,
             key,
         }
-    }
-
-    /// Starts a sub-step: the impulse to push with again, which becomes the running total.
-    /// The lesser of the last two sub-steps' totals: a resting load is the same in both, an
-    /// impact is a spike in one, and pushing it again would bounce the balls apart.
-    fn carry(&mut self) -> f64 {
-        let carried = self.least();
-        self.previous = self.impulse;
-        self.impulse = carried;
-        carried
-    }
-
-    /// The lesser of the last two sub-steps' totals.
-    fn least(&self) -> f64 {
-        self.impulse.min(self.previous)
     }
 
     /// The velocity pass for one contact whose relative normal speed is `speed` (negative:
     /// closing): updates the running total and returns the impulse to apply now.
     fn solve(&mut self, speed: f64, sub: SubStep) -> f64 {
-        let bounces = self.rebound > 0.0 && self.separation + speed * sub.h < 0.0;
+        // It bounces if it touches within the sub-step closing fast enough for its rebound,
+        // `e` times the approach speed now, to beat the rest speed. Now, not when the contact
+        // was found: a ball struck in this step passes the blow on to the next (a resting
+        // ball hit from above bounces off the floor and throws the striker back up).
+        let rebound = -self.restitution * speed;
+        let bounces = rebound > sub.rest_speed && self.separation + speed * sub.h < 0.0;
         let target = if bounces {
-            // Never faster than `e` times the approach now: other contacts may have slowed
-            // it since the contact was found, and a bounce must not add energy.
-            std::mem::take(&mut self.rebound).min(-self.restitution * speed)
+            rebound
         } else {
             // Resting, or speculative: close by no more than the gap within the sub-step.
             -self.separation.max(0.0) / sub.h
@@ -516,18 +606,7 @@ impl FixedContact {
     }
 }
 
-/// The parting speed a contact closing at `approach` (negative: closing) bounces to, or 0 if
-/// that would be below `rest_speed`.
-fn rebound(restitution: f64, approach: f64, rest_speed: f64) -> f64 {
-    let rebound = -restitution * approach;
-    if rebound > rest_speed {
-        rebound
-    } else {
-        0.0
-    }
-}
-
-/// Mass of a ball: radius², as in ball-ball collisions (flat discs of equal density).
+/// Mass of a ball: radius² (flat discs of equal density).
 fn mass(ball: &Ball) -> f64 {
     ball.radius * ball.radius
 }
@@ -537,14 +616,19 @@ fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
 }
 
 /// The gap between two balls whose radii add up to `reach`, and the normal from `a` to `b`
-/// (`fallback` if their centres coincide).
-fn pair_gap(a: &Ball, b: &Ball, reach: f64, fallback: [f64; 2]) -> (f64, [f64; 2]) {
+/// (`fallback()` if their centres coincide).
+fn pair_gap(
+    a: &Ball,
+    b: &Ball,
+    reach: f64,
+    fallback: impl FnOnce() -> [f64; 2],
+) -> (f64, [f64; 2]) {
     let (dx, dy) = (b.x - a.x, b.y - a.y);
     let distance = (dx * dx + dy * dy).sqrt();
     if distance > 0.0 {
         (distance - reach, [dx / distance, dy / distance])
     } else {
-        (-reach, fallback)
+        (-reach, fallback())
     }
 }
 
@@ -552,4 +636,13 @@ fn pair_gap(a: &Ball, b: &Ball, reach: f64, fallback: [f64; 2]) -> (f64, [f64; 2
 fn two(balls: &mut [Ball], a: usize, b: usize) -> (&mut Ball, &mut Ball) {
     let (head, tail) = balls.split_at_mut(b);
     (&mut head[a], &mut tail[0])
+}
+
+/// The normal for two balls at exactly the same centre, where the line between centres has
+/// no direction. Any fixed direction would separate a pair, but a heap spawned on one spot
+/// would then spread along a single line; so ball `j` leaves at `j` golden angles, which
+/// fans successive balls out evenly round the circle, and depends on nothing but `j`.
+fn coincident_normal(j: usize) -> (f64, f64) {
+    let angle = GOLDEN_ANGLE * j as f64;
+    (angle.cos(), angle.sin())
 }

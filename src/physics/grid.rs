@@ -32,8 +32,10 @@ pub struct Grid {
     entries: Vec<Entry>,
     /// The balls of cell `c` are `entries[cell_start[c]..cell_start[c + 1]]`.
     cell_start: Vec<usize>,
-    /// Each ball's cell, in the caller's order: the counting sort's scratch space.
+    /// Each ball's cell and its radius grown by its margin, in the caller's order: the
+    /// counting sort's scratch space (a margin is worked out once per ball).
     cell_of: Vec<usize>,
+    grown: Vec<f64>,
     columns: usize,
     rows: usize,
 }
@@ -64,12 +66,15 @@ impl Grid {
         };
         let (mut left, mut top, mut right, mut bottom) = (first.x, first.y, first.x, first.y);
         let mut largest_radius = 0.0_f64;
+        self.grown.clear();
         for ball in balls {
             left = left.min(ball.x);
             top = top.min(ball.y);
             right = right.max(ball.x);
             bottom = bottom.max(ball.y);
-            largest_radius = largest_radius.max(ball.radius + margin(ball));
+            let grown = ball.radius + margin(ball);
+            largest_radius = largest_radius.max(grown);
+            self.grown.push(grown);
         }
         let (width, height) = (right - left, bottom - top);
 
@@ -115,7 +120,7 @@ impl Grid {
             self.entries[*slot] = Entry {
                 x: ball.x,
                 y: ball.y,
-                radius: ball.radius + margin(ball),
+                radius: self.grown[index],
                 index,
             };
         }

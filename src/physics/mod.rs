@@ -7,16 +7,17 @@
 //! - [`effects`]: which forces and boundaries a scene has (an absent one costs nothing).
 //! - [`integrator`], [`motion`], [`exact`], [`poly`]: turning forces into motion; substeps;
 //!   bouncing at the exact time of impact.
-//! - [`collisions`], [`grid`]: ball-ball contacts and the broad phase that finds them.
-//! - [`contacts`]: the iterative contact solver that piles and stacks need (clamp mode).
+//! - [`grid`]: the broad phase that finds which balls can touch.
+//! - [`contacts`]: ball-ball collisions in clamp mode: the iterative contact solver that
+//!   piles and stacks need.
 //! - [`toi`], [`events`]: exact mode's ball-ball contacts: times of impact, and the
 //!   event-driven step that resolves every contact at its moment.
 //! - [`simulation`]: all balls advanced one frame, in the order above.
-//! - [`accuracy`]: closed forms to measure the solver against; [`work`]: counting effect work.
+//! - [`accuracy`]: closed forms and measures (energy, overlap) to check the solver against;
+//!   [`work`]: counting effect work.
 
 pub mod accuracy;
 pub mod ball;
-pub mod collisions;
 pub mod contacts;
 pub mod effects;
 pub mod events;

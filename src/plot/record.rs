@@ -4,8 +4,8 @@
 //! Energies are per unit mass, in px²/frame²: kinetic `½·|v|²`, potential `g·h` with `h` the
 //! distance the ball could still fall (to the floor, for the lesson's gravity).
 
+use crate::physics::accuracy::kinetic_energy;
 use crate::physics::ball::Ball;
-use crate::physics::collisions::kinetic_energy;
 use crate::physics::grid::Grid;
 use crate::scene::Scene;
 
