@@ -132,6 +132,22 @@ impl Cells {
         self.visit_cells(around, visit);
     }
 
+    /// Calls `visit` with every ball in the cells that ball `i`'s last move, along `axis`
+    /// towards `towards`, brought around it: the far row (or column) of its new neighbourhood,
+    /// three cells (fewer at the grid's edge, none past it).
+    pub fn entered(&self, i: usize, axis: u8, towards: i8, visit: impl FnMut(usize)) {
+        let counts = [self.columns, self.rows];
+        let mut cells = [0, 1].map(|a| around(self.at[i][a], counts[a]));
+        let a = usize::from(axis);
+        // Past the first cell this wraps to `usize::MAX`, past the last it reaches `count`.
+        let far = self.at[i][a].wrapping_add_signed(isize::from(towards));
+        if far >= counts[a] {
+            return;
+        }
+        cells[a] = far..=far;
+        self.visit_cells(cells, visit);
+    }
+
     /// Calls `visit` with every ball in the cells of the given column and row ranges.
     fn visit_cells(
         &self,

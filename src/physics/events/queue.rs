@@ -25,7 +25,7 @@ pub enum What {
 }
 
 /// One ball's next event.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Event {
     /// When, in frames since the start of the step.
     pub time: f64,
@@ -34,7 +34,8 @@ pub struct Event {
     partner_count: u32,
 }
 
-const NOTHING: Event = Event {
+/// No event: nothing predicted.
+pub const NOTHING: Event = Event {
     time: f64::INFINITY,
     what: What::Nothing,
     partner_count: 0,
@@ -66,20 +67,35 @@ impl Queue {
         self.counts.resize(balls, 0);
     }
 
-    /// Makes `what` at `time` the next event of `ball`, replacing the one it had.
-    pub fn set(&mut self, ball: usize, time: f64, what: What) {
+    /// `what` at `time`, as an event of a ball predicted now (it remembers the partner's
+    /// counter, so it can tell later whether the partner has changed course since).
+    pub fn event(&self, time: f64, what: What) -> Event {
         let partner_count = match what {
             What::Ball(other) => self.counts[other as usize],
             _ => 0,
         };
-        let earlier = time < self.next[ball].time;
-        self.next[ball] = Event {
+        Event {
             time,
             what,
             partner_count,
-        };
+        }
+    }
+
+    /// Whether `event` still stands: it has no partner, or its partner has not changed course
+    /// since it was predicted.
+    pub fn current(&self, event: &Event) -> bool {
+        match event.what {
+            What::Ball(other) => self.counts[other as usize] == event.partner_count,
+            _ => true,
+        }
+    }
+
+    /// Makes `event` the next event of `ball`, replacing the one it had.
+    pub fn set(&mut self, ball: usize, event: Event) {
+        let earlier = event.time < self.next[ball].time;
+        self.next[ball] = event;
         let at = self.place[ball] as usize;
-        self.heap[at].0 = time;
+        self.heap[at].0 = event.time;
         if earlier {
             self.sift_up(at);
         } else {
@@ -103,11 +119,7 @@ impl Queue {
         if event.time.total_cmp(&end).is_gt() {
             return None;
         }
-        let current = match event.what {
-            What::Ball(other) => self.counts[other as usize] == event.partner_count,
-            _ => true,
-        };
-        Some((ball, event, current))
+        Some((ball, event, self.current(&event)))
     }
 
     /// Carries the events still to come over to the next step, which starts `dt` frames
@@ -169,14 +181,15 @@ mod tests {
     fn events_come_out_earliest_first_and_out_of_date_ones_are_flagged() {
         let mut queue = Queue::default();
         queue.reset(4);
-        queue.set(0, 0.5, What::Ball(1));
-        queue.set(2, 0.75, What::Contact);
-        queue.set(3, 0.9, What::Contact);
-        queue.set(2, 0.25, What::Contact); // predicted again: replaces 0.75
+        let mut set = |ball, time, what| queue.set(ball, queue.event(time, what));
+        set(0, 0.5, What::Ball(1));
+        set(2, 0.75, What::Contact);
+        set(3, 0.9, What::Contact);
+        set(2, 0.25, What::Contact); // predicted again: replaces 0.75
         queue.changed(1); // ball 1 changed course: ball 0's event is out of date
         let popped: Vec<(usize, f64, bool)> = std::iter::from_fn(|| {
             let (ball, event, current) = queue.earliest(1.0)?;
-            queue.set(ball, f64::INFINITY, What::Nothing); // nothing more for it
+            queue.set(ball, NOTHING); // nothing more for it
             Some((ball, event.time, current))
         })
         .collect();
@@ -191,7 +204,7 @@ mod tests {
     fn events_carried_into_the_next_step_move_back_by_its_length() {
         let mut queue = Queue::default();
         queue.reset(2);
-        queue.set(0, 1.5, What::Contact);
+        queue.set(0, queue.event(1.5, What::Contact));
         assert!(
             queue.earliest(1.0).is_none(),
             "nothing is due within the step"
