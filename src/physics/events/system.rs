@@ -188,7 +188,7 @@ impl EventDriven {
         let mut events = 0;
         let mut end = forces.dt;
         // Every branch predicts the ball again, which replaces its event in the calendar.
-        while let Some((i, event, current)) = self.queue.earliest(forces.dt) {
+        while let Some((i, event, current)) = self.queue.earliest() {
             let now = event.time;
             if !current {
                 // Its partner changed course since: predict the ball again from here.
@@ -257,7 +257,7 @@ impl EventDriven {
         }
         self.carried = straight && unused == 0.0 && covered;
         if self.carried {
-            self.queue.carry_over(forces.dt);
+            self.queue.carry_over();
             for bounce in &mut self.bounce {
                 bounce.time -= forces.dt;
             }
@@ -276,7 +276,7 @@ impl EventDriven {
         }
         let area = step.effects.walls.as_ref().map(|w| [w.width, w.height]);
         self.cells.rebuild(balls, area);
-        self.queue.reset(balls.len());
+        self.queue.reset(balls.len(), step.forces.dt);
         self.clock.clear();
         self.clock.resize(balls.len(), 0.0);
         self.bounce.clear();
