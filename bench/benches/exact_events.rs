@@ -1,5 +1,6 @@
 //! How fast exact mode resolves ball-ball collisions, and whether the cost of one stays flat
-//! as the number of balls grows (the event calendar is O(log N) per event).
+//! as the number of balls grows (the event calendar files an event in O(1), the grid finds
+//! neighbours in O(1)).
 //!
 //! An elastic gas: equal balls of radius 3 covering 30 % of a box with elastic walls, no
 //! gravity, started on a jittered square lattice with random velocities and stirred for a few

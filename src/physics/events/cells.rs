@@ -15,12 +15,10 @@ use std::ops::RangeInclusive;
 
 use super::super::ball::Ball;
 use super::super::poly::Poly;
+use super::lists::Lists;
 
 /// No more than about this many cells per ball: sparse balls get wider cells instead.
 const MAX_CELLS_PER_BALL: f64 = 4.0;
-
-/// The end of a cell's list.
-const NONE: u32 = u32::MAX;
 
 /// Balls in cells, rebuilt at the start of every step into the same buffers.
 #[derive(Clone, Debug, Default)]
@@ -31,11 +29,9 @@ pub struct Cells {
     margin: f64,
     columns: usize,
     rows: usize,
-    /// First ball of each cell's list.
-    head: Vec<u32>,
-    /// Per ball: the next and previous ball in its cell's list, and its cell's column and row.
-    next: Vec<u32>,
-    prev: Vec<u32>,
+    /// The balls in each cell.
+    balls: Lists,
+    /// Per ball: its cell's column and row.
     at: Vec<[usize; 2]>,
 }
 
@@ -71,12 +67,7 @@ impl Cells {
         self.rows = (height / self.size) as usize + 1;
         (self.left, self.top) = (left, top);
 
-        self.head.clear();
-        self.head.resize(self.columns * self.rows, NONE);
-        self.next.clear();
-        self.next.resize(balls.len(), NONE);
-        self.prev.clear();
-        self.prev.resize(balls.len(), NONE);
+        self.balls.reset(self.columns * self.rows, balls.len());
         self.at.clear();
         for (i, ball) in balls.iter().enumerate() {
             let column = (((ball.x - left) / self.size) as usize).min(self.columns - 1);
@@ -100,29 +91,9 @@ impl Cells {
         row * self.columns + column
     }
 
-    /// Puts ball `i` at the head of the list of the cell `at[i]` says.
+    /// Puts ball `i` in the cell `at[i]` says.
     fn link(&mut self, i: usize) {
-        let cell = self.cell(self.at[i]);
-        let first = self.head[cell];
-        self.next[i] = first;
-        self.prev[i] = NONE;
-        if first != NONE {
-            self.prev[first as usize] = i as u32;
-        }
-        self.head[cell] = i as u32;
-    }
-
-    fn unlink(&mut self, i: usize) {
-        let (next, prev) = (self.next[i], self.prev[i]);
-        if prev == NONE {
-            let cell = self.cell(self.at[i]);
-            self.head[cell] = next;
-        } else {
-            self.next[prev as usize] = next;
-        }
-        if next != NONE {
-            self.prev[next as usize] = prev;
-        }
+        self.balls.insert(i, self.cell(self.at[i]));
     }
 
     /// Calls `visit` with every ball in ball `i`'s cell and the eight around it (`i` included).
@@ -130,6 +101,22 @@ impl Cells {
         let counts = [self.columns, self.rows];
         let around = [0, 1].map(|a| around(self.at[i][a], counts[a]));
         self.visit_cells(around, visit);
+    }
+
+    /// Calls `visit` with every ball in the cells that ball `i`'s last move, along `axis`
+    /// towards `towards`, brought around it: the far row (or column) of its new neighbourhood,
+    /// three cells (fewer at the grid's edge, none past it).
+    pub fn entered(&self, i: usize, axis: u8, towards: i8, visit: impl FnMut(usize)) {
+        let counts = [self.columns, self.rows];
+        let mut cells = [0, 1].map(|a| around(self.at[i][a], counts[a]));
+        let a = usize::from(axis);
+        // Past the first cell this wraps to `usize::MAX`, past the last it reaches `count`.
+        let far = self.at[i][a].wrapping_add_signed(isize::from(towards));
+        if far >= counts[a] {
+            return;
+        }
+        cells[a] = far..=far;
+        self.visit_cells(cells, visit);
     }
 
     /// Calls `visit` with every ball in the cells of the given column and row ranges.
@@ -140,10 +127,8 @@ impl Cells {
     ) {
         for r in rows {
             for c in columns.clone() {
-                let mut j = self.head[r * self.columns + c];
-                while j != NONE {
-                    visit(j as usize);
-                    j = self.next[j as usize];
+                for j in self.balls.balls(r * self.columns + c) {
+                    visit(j);
                 }
             }
         }
@@ -175,7 +160,7 @@ impl Cells {
 
     /// Moves ball `i` into the next cell along `axis` towards `towards`.
     pub fn shift(&mut self, i: usize, axis: u8, towards: i8) {
-        self.unlink(i);
+        self.balls.remove(i);
         let at = &mut self.at[i][usize::from(axis)];
         *at = at.wrapping_add_signed(isize::from(towards));
         self.link(i);

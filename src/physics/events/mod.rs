@@ -8,11 +8,13 @@
 //! events are predicted again.
 //!
 //! - [`queue`]: the calendar: each ball's next event, in a binary heap of the balls.
+//! - [`lists`]: balls in numbered lists (the grid's cells, the calendar's days), O(1) moves.
 //! - [`cells`]: the uniform grid that says which balls can meet soon, and when a ball leaves
 //!   its cell.
 //! - [`system`]: one step of the whole scene, event after event; the rules that make inelastic
 //!   collapse finish; the counts it reports.
 
 pub mod cells;
+pub mod lists;
 pub mod queue;
 pub mod system;

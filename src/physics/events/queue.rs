@@ -1,15 +1,24 @@
 //! The event calendar: each ball's next event, earliest first.
 //!
 //! Each ball keeps only its earliest predicted event (Lubachevsky; DynamO keeps one entry per
-//! particle in its global queue too), and the calendar is a binary heap of the balls ordered by
-//! that event's time, with each ball's place in the heap remembered, so a new prediction moves
-//! its ball up or down in O(log N) and the heap never holds more than N entries, none stale.
+//! particle in its global queue too), so the calendar never holds more than N events, none
+//! stale. It is a *calendar queue* (Brown; Paul's O(1) queue for event-driven molecular
+//! dynamics): the step is cut into as many days as there are balls, each day a list of the
+//! balls whose events fall on it, and only today's events sit in a binary heap (with each
+//! ball's place in it remembered). Filing an event on a later day costs O(1); a heap of the
+//! whole scene would cost O(log N) and a walk through memory far too big for the cache on
+//! every event, since the ball whose event just came up goes from the top to near the bottom.
+//! A day holds about one event, so today's heap is tiny; should the events crowd into one day,
+//! the heap still keeps each one O(log N). Events after the step's end wait outside the
+//! calendar, which is laid out again when they are carried into the next step.
 //!
 //! A ball's own event is replaced whenever it is predicted again. An event with a partner can
 //! still go out of date when the *partner* changes course: each ball has a counter that goes
 //! up whenever it does, the event remembers the partner's counter, and when such an event
 //! comes up with the counter moved on, its ball is predicted again instead (nothing before it
 //! can have been missed: any change since was made by balls that predicted their own events).
+
+use super::lists::Lists;
 
 /// What happens to a ball at its event.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -25,7 +34,7 @@ pub enum What {
 }
 
 /// One ball's next event.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Event {
     /// When, in frames since the start of the step.
     pub time: f64,
@@ -34,57 +43,94 @@ pub struct Event {
     partner_count: u32,
 }
 
-const NOTHING: Event = Event {
+/// No event: nothing predicted.
+pub const NOTHING: Event = Event {
     time: f64::INFINITY,
     what: What::Nothing,
     partner_count: 0,
 };
 
+/// Not in today's heap.
+const NOWHERE: u32 = u32::MAX;
+
 /// The balls' next events.
 #[derive(Clone, Debug, Default)]
 pub struct Queue {
     next: Vec<Event>,
-    /// The balls with the times of their next events, heap-ordered by time.
-    heap: Vec<(f64, u32)>,
-    /// Per ball: its index in `heap`.
-    place: Vec<u32>,
     /// Per ball: how often it has changed course.
     counts: Vec<u32>,
+    /// The step's length, frames: later events wait for the next step.
+    length: f64,
+    /// How long a day is, frames.
+    day: f64,
+    /// The balls whose events come on each day of the step after today.
+    days: Lists,
+    /// The day now: no event is on an earlier one.
+    today: usize,
+    /// The balls whose events come today (or earlier), with their times, heap-ordered by time.
+    heap: Vec<(f64, u32)>,
+    /// Per ball: its index in `heap`, or `NOWHERE`.
+    place: Vec<u32>,
 }
 
 impl Queue {
-    /// A calendar of `balls` balls with nothing predicted, keeping the allocations.
-    pub fn reset(&mut self, balls: usize) {
+    /// A calendar of `balls` balls with nothing predicted, for a step `length` frames long,
+    /// keeping the allocations.
+    pub fn reset(&mut self, balls: usize, length: f64) {
         self.next.clear();
         self.next.resize(balls, NOTHING);
-        self.heap.clear();
-        self.heap
-            .extend((0..balls as u32).map(|ball| (f64::INFINITY, ball)));
-        self.place.clear();
-        self.place.extend(0..balls as u32);
         self.counts.clear();
         self.counts.resize(balls, 0);
+        self.length = length;
+        self.day = length / balls.max(1) as f64;
+        self.lay_out();
     }
 
-    /// Makes `what` at `time` the next event of `ball`, replacing the one it had.
-    pub fn set(&mut self, ball: usize, time: f64, what: What) {
+    /// Empties the days and today's heap and files every ball's event again, from the first day.
+    fn lay_out(&mut self) {
+        let balls = self.next.len();
+        self.days.reset(balls.max(1), balls);
+        self.today = 0;
+        self.heap.clear();
+        self.place.clear();
+        self.place.resize(balls, NOWHERE);
+        for ball in 0..balls {
+            self.file(ball);
+        }
+    }
+
+    /// `what` at `time`, as an event of a ball predicted now (it remembers the partner's
+    /// counter, so it can tell later whether the partner has changed course since).
+    pub fn event(&self, time: f64, what: What) -> Event {
         let partner_count = match what {
             What::Ball(other) => self.counts[other as usize],
             _ => 0,
         };
-        let earlier = time < self.next[ball].time;
-        self.next[ball] = Event {
+        Event {
             time,
             what,
             partner_count,
-        };
-        let at = self.place[ball] as usize;
-        self.heap[at].0 = time;
-        if earlier {
-            self.sift_up(at);
-        } else {
-            self.sift_down(at);
         }
+    }
+
+    /// Whether `event` still stands: it has no partner, or its partner has not changed course
+    /// since it was predicted.
+    pub fn current(&self, event: &Event) -> bool {
+        match event.what {
+            What::Ball(other) => self.counts[other as usize] == event.partner_count,
+            _ => true,
+        }
+    }
+
+    /// Makes `event` the next event of `ball`, replacing the one it had.
+    pub fn set(&mut self, ball: usize, event: Event) {
+        if self.place[ball] == NOWHERE {
+            self.days.remove(ball);
+        } else {
+            self.take_from_heap(ball);
+        }
+        self.next[ball] = event;
+        self.file(ball);
     }
 
     /// Marks `ball` as having changed course: events other balls predicted with it are out of
@@ -93,31 +139,74 @@ impl Queue {
         self.counts[ball] = self.counts[ball].wrapping_add(1);
     }
 
-    /// The ball with the earliest event, and that event, if it comes no later than `end`. The
-    /// flag says whether the event is current (`false`: its partner changed course since, so
-    /// only the ball is to be predicted again). The caller must set the ball's next event
-    /// (predict it again), or the same event comes up again.
-    pub fn earliest(&self, end: f64) -> Option<(usize, Event, bool)> {
-        let ball = self.heap.first()?.1 as usize;
-        let event = self.next[ball];
-        if event.time.total_cmp(&end).is_gt() {
-            return None;
+    /// The ball with the earliest event within the step, and that event. The flag says whether
+    /// the event is current (`false`: its partner changed course since, so only the ball is to
+    /// be predicted again). The caller must set the ball's next event (predict it again), or
+    /// the same event comes up again.
+    pub fn earliest(&mut self) -> Option<(usize, Event, bool)> {
+        while self.heap.is_empty() {
+            if self.today + 1 >= self.days_count() {
+                return None;
+            }
+            self.today += 1;
+            while let Some(ball) = self.days.first(self.today) {
+                self.days.remove(ball);
+                self.push(ball);
+            }
         }
-        let current = match event.what {
-            What::Ball(other) => self.counts[other as usize] == event.partner_count,
-            _ => true,
-        };
-        Some((ball, event, current))
+        let ball = self.heap[0].1 as usize;
+        let event = self.next[ball];
+        Some((ball, event, self.current(&event)))
     }
 
-    /// Carries the events still to come over to the next step, which starts `dt` frames
-    /// later: their times move back by `dt` (the same shift for all keeps the heap's order).
-    pub fn carry_over(&mut self, dt: f64) {
+    /// Carries the events still to come over to the next step, which starts a step's length
+    /// later: their times move back by that much, and the calendar is laid out afresh.
+    pub fn carry_over(&mut self) {
         for event in &mut self.next {
-            event.time -= dt;
+            event.time -= self.length;
         }
-        for (time, _) in &mut self.heap {
-            *time -= dt;
+        self.lay_out();
+    }
+
+    fn days_count(&self) -> usize {
+        self.next.len().max(1)
+    }
+
+    /// Puts `ball`, in neither a day nor the heap, where its event's time says: today's heap,
+    /// a later day, or nowhere if it comes after the step.
+    fn file(&mut self, ball: usize) {
+        let time = self.next[ball].time;
+        if time.is_nan() || time > self.length {
+            return;
+        }
+        // `as usize` saturates (and maps NaN to 0), so the day is always in range; an event a
+        // rounding error before today is filed today.
+        let day = ((time / self.day) as usize)
+            .min(self.days_count() - 1)
+            .max(self.today);
+        if day == self.today {
+            self.push(ball);
+        } else {
+            self.days.insert(ball, day);
+        }
+    }
+
+    fn push(&mut self, ball: usize) {
+        self.heap.push((self.next[ball].time, ball as u32));
+        let at = self.heap.len() - 1;
+        self.place[ball] = at as u32;
+        self.sift_up(at);
+    }
+
+    fn take_from_heap(&mut self, ball: usize) {
+        let at = self.place[ball] as usize;
+        self.place[ball] = NOWHERE;
+        let last = self.heap.pop().expect("a ball with a place is in the heap");
+        if at < self.heap.len() {
+            self.heap[at] = last;
+            self.place[last.1 as usize] = at as u32;
+            self.sift_up(at);
+            self.sift_down(at);
         }
     }
 
@@ -168,15 +257,16 @@ mod tests {
     #[test]
     fn events_come_out_earliest_first_and_out_of_date_ones_are_flagged() {
         let mut queue = Queue::default();
-        queue.reset(4);
-        queue.set(0, 0.5, What::Ball(1));
-        queue.set(2, 0.75, What::Contact);
-        queue.set(3, 0.9, What::Contact);
-        queue.set(2, 0.25, What::Contact); // predicted again: replaces 0.75
+        queue.reset(4, 1.0);
+        let mut set = |ball, time, what| queue.set(ball, queue.event(time, what));
+        set(0, 0.5, What::Ball(1));
+        set(2, 0.75, What::Contact);
+        set(3, 0.9, What::Contact);
+        set(2, 0.25, What::Contact); // predicted again: replaces 0.75
         queue.changed(1); // ball 1 changed course: ball 0's event is out of date
         let popped: Vec<(usize, f64, bool)> = std::iter::from_fn(|| {
-            let (ball, event, current) = queue.earliest(1.0)?;
-            queue.set(ball, f64::INFINITY, What::Nothing); // nothing more for it
+            let (ball, event, current) = queue.earliest()?;
+            queue.set(ball, NOTHING); // nothing more for it
             Some((ball, event.time, current))
         })
         .collect();
@@ -190,16 +280,11 @@ mod tests {
     #[test]
     fn events_carried_into_the_next_step_move_back_by_its_length() {
         let mut queue = Queue::default();
-        queue.reset(2);
-        queue.set(0, 1.5, What::Contact);
-        assert!(
-            queue.earliest(1.0).is_none(),
-            "nothing is due within the step"
-        );
-        queue.carry_over(1.0);
-        let next = queue
-            .earliest(1.0)
-            .map(|(ball, event, _)| (ball, event.time));
+        queue.reset(2, 1.0);
+        queue.set(0, queue.event(1.5, What::Contact));
+        assert!(queue.earliest().is_none(), "nothing is due within the step");
+        queue.carry_over();
+        let next = queue.earliest().map(|(ball, event, _)| (ball, event.time));
         assert_eq!(
             next,
             Some((0, 0.5)),

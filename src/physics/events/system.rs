@@ -45,7 +45,7 @@ use super::super::poly::Poly;
 use super::super::toi::{self, TOUCH_SPEED};
 use super::super::work::{tally, Work};
 use super::cells::Cells;
-use super::queue::{Queue, What};
+use super::queue::{Event, Queue, What, NOTHING};
 
 /// The most events one step may resolve, per ball.
 pub const MAX_EVENTS_PER_BALL: u64 = 64;
@@ -87,7 +87,10 @@ pub struct EventDriven {
     /// Per ball: the time its state is valid at, and the forces of its flight this step.
     clock: Vec<f64>,
     flight: Vec<Forces>,
-    /// Per ball: the wall or floor its pending contact event is with.
+    /// Per ball: when it first touches another ball as predicted, which stays true while the
+    /// ball keeps its course, however many cells it crosses on the way.
+    bounce: Vec<Event>,
+    /// Per ball: the wall or floor its predicted contact is with.
     contact: Vec<Option<Contact>>,
     /// Per ball: the surfaces it rests on at the start of the step.
     support: Vec<Support>,
@@ -123,6 +126,7 @@ impl EventDriven {
             cells: Cells::default(),
             clock: Vec::new(),
             flight: Vec::new(),
+            bounce: Vec::new(),
             contact: Vec::new(),
             support: Vec::new(),
             held: Vec::new(),
@@ -184,7 +188,7 @@ impl EventDriven {
         let mut events = 0;
         let mut end = forces.dt;
         // Every branch predicts the ball again, which replaces its event in the calendar.
-        while let Some((i, event, current)) = self.queue.earliest(forces.dt) {
+        while let Some((i, event, current)) = self.queue.earliest() {
             let now = event.time;
             if !current {
                 // Its partner changed course since: predict the ball again from here.
@@ -222,9 +226,15 @@ impl EventDriven {
                     self.predict(balls, i, &step);
                 }
                 What::Cell { axis, towards } => {
-                    // The ball keeps its course, so events other balls predicted with it stand.
+                    // The ball keeps its course, so events other balls predicted with it stand,
+                    // and so does its own bounce unless its partner changed course since: then
+                    // only the balls of the cells it now comes near need looking at.
                     self.cells.shift(i, axis, towards);
-                    self.predict(balls, i, &step);
+                    if self.queue.current(&self.bounce[i]) {
+                        self.predict_entered(balls, i, axis, towards, &step);
+                    } else {
+                        self.predict(balls, i, &step);
+                    }
                 }
             }
         }
@@ -247,7 +257,10 @@ impl EventDriven {
         }
         self.carried = straight && unused == 0.0 && covered;
         if self.carried {
-            self.queue.carry_over(forces.dt);
+            self.queue.carry_over();
+            for bounce in &mut self.bounce {
+                bounce.time -= forces.dt;
+            }
             self.clock.fill(0.0);
         }
         self.elapsed += forces.dt;
@@ -263,9 +276,11 @@ impl EventDriven {
         }
         let area = step.effects.walls.as_ref().map(|w| [w.width, w.height]);
         self.cells.rebuild(balls, area);
-        self.queue.reset(balls.len());
+        self.queue.reset(balls.len(), step.forces.dt);
         self.clock.clear();
         self.clock.resize(balls.len(), 0.0);
+        self.bounce.clear();
+        self.bounce.resize(balls.len(), NOTHING);
         self.contact.clear();
         self.contact.resize(balls.len(), None);
         self.support.clear();
@@ -388,18 +403,88 @@ impl EventDriven {
     }
 
     /// Predicts the next event of ball `i` (whose clock is now) up to the step's horizon: the
-    /// earliest of its contacts with walls and floors, leaving its cell, and touching each ball
-    /// in the neighbouring cells.
+    /// earliest of touching each ball in the neighbouring cells (its bounce), leaving its cell,
+    /// and its contacts with walls and floors.
     fn predict(&mut self, balls: &[Ball], i: usize, step: &Step) {
         let now = self.clock[i];
-        let ball = &balls[i];
-        let path = step.integrator.path(ball, &self.flight[i]);
+        let path = step.integrator.path(&balls[i], &self.flight[i]);
+        let mut first = (step.horizon - now, None);
+        self.cells.neighbours(i, |j| {
+            if let Some(time) = self.touch(balls, i, j, &path, step, first.0) {
+                first = (time, Some(j));
+            }
+        });
+        self.bounce[i] = match first {
+            (time, Some(j)) => self.queue.event(now + time, What::Ball(j as u32)),
+            (_, None) => NOTHING,
+        };
+        self.schedule(balls, i, &path, step);
+    }
+
+    /// Predicts the next event of ball `i` (whose clock is now), which has just moved along
+    /// `axis` towards `towards` into another cell without changing course: its bounce stands,
+    /// unless a ball in the cells it has come near touches it first.
+    fn predict_entered(&mut self, balls: &[Ball], i: usize, axis: u8, towards: i8, step: &Step) {
+        let now = self.clock[i];
+        let path = step.integrator.path(&balls[i], &self.flight[i]);
+        let mut first = (self.bounce[i].time.min(step.horizon) - now, None);
+        self.cells.entered(i, axis, towards, |j| {
+            if let Some(time) = self.touch(balls, i, j, &path, step, first.0) {
+                first = (time, Some(j));
+            }
+        });
+        if let (time, Some(j)) = first {
+            self.bounce[i] = self.queue.event(now + time, What::Ball(j as u32));
+        }
+        self.schedule(balls, i, &path, step);
+    }
+
+    /// Makes the earliest of ball `i`'s bounce, its leaving its cell and its contacts with
+    /// walls and floors (along `path`, from its clock) its next event.
+    fn schedule(&mut self, balls: &[Ball], i: usize, path: &[Poly; 2], step: &Step) {
+        let now = self.clock[i];
+        let bounce = self.bounce[i];
         // The earliest so far, as time from now; later candidates are not looked for.
-        let mut first = (step.horizon - now, What::Nothing);
-        if let Some((time, axis, towards)) = self.cells.exit(i, &path, first.0) {
+        let mut first = (bounce.time.min(step.horizon) - now, bounce.what);
+        if let Some((time, axis, towards)) = self.cells.exit(i, path, first.0) {
             first = (time, What::Cell { axis, towards });
         }
-        let (clock, flight) = (&self.clock, &self.flight);
+        // Walls and floors last: with the horizon cut short, far ones are skipped unsolved.
+        let ball = &balls[i];
+        let bounds = Bounds::of(ball, step.effects);
+        self.contact[i] = bounds
+            .first_contact(ball, path, first.0)
+            .filter(|&(time, _)| time < first.0 || first.1 == What::Nothing)
+            .map(|(time, contact)| {
+                first = (time, What::Contact);
+                contact
+            });
+        let next = match first {
+            (_, What::Ball(_)) => bounce,
+            (_, What::Nothing) => NOTHING,
+            (time, what) => self.queue.event(now + time, what),
+        };
+        self.queue.set(i, next);
+    }
+
+    /// When ball `i` (whose clock is now, and whose centre moves along `path`) first touches
+    /// ball `j`, as time from now, if that is earlier than `end`.
+    #[inline(always)] // called for every neighbour: a call would cost more than the test
+    fn touch(
+        &self,
+        balls: &[Ball],
+        i: usize,
+        j: usize,
+        path: &[Poly; 2],
+        step: &Step,
+        end: f64,
+    ) -> Option<f64> {
+        if j == i {
+            return None;
+        }
+        let (ball, other) = (&balls[i], &balls[j]);
+        let reach = ball.radius + other.radius;
+        let behind = self.clock[i] - self.clock[j];
         // Straight flights (the Euler methods, or nothing to curve them) need no polynomials.
         let straight = |forces: &Forces| {
             matches!(
@@ -407,51 +492,24 @@ impl EventDriven {
                 Integrator::ExplicitEuler | Integrator::SemiImplicitEuler
             ) || (forces.gravity.is_none() && forces.drag.is_none())
         };
-        let mine_straight = straight(&flight[i]);
-        self.cells.neighbours(i, |j| {
-            if j == i {
-                return;
-            }
-            let other = &balls[j];
-            let reach = ball.radius + other.radius;
-            let behind = now - clock[j];
-            let touch = if mine_straight && straight(&flight[j]) {
-                let offset = [
-                    other.x + other.vx * behind - ball.x,
-                    other.y + other.vy * behind - ball.y,
-                ];
-                let velocity = [other.vx - ball.vx, other.vy - ball.vy];
-                toi::straight(offset, velocity, reach, first.0)
-            } else {
-                // The other ball as it will be now, so both flights start at the same moment.
-                let mut there = Ball::new(other.x, other.y, other.vx, other.vy, other.radius, 0);
-                if behind > 0.0 {
-                    step.integrator.fly(&mut there, &flight[j], behind);
-                }
-                let theirs = step.integrator.path(&there, &flight[j]);
-                let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis].minus_poly(&path[axis]));
-                toi::first_touch(&relative, reach, first.0)
-            };
-            if let Some(time) = touch.filter(|&time| time < first.0) {
-                first = (time, What::Ball(j as u32));
-            }
-        });
-        // Walls and floors last: with the horizon cut short, far ones are skipped unsolved.
-        let bounds = Bounds::of(ball, step.effects);
-        self.contact[i] = bounds
-            .first_contact(ball, &path, first.0)
-            .filter(|&(time, _)| time < first.0 || first.1 == What::Nothing)
-            .map(|(time, contact)| {
-                first = (time, What::Contact);
-                contact
-            });
-        let (time, what) = first;
-        let time = if what == What::Nothing {
-            f64::INFINITY
+        let touch = if straight(&self.flight[i]) && straight(&self.flight[j]) {
+            let offset = [
+                other.x + other.vx * behind - ball.x,
+                other.y + other.vy * behind - ball.y,
+            ];
+            let velocity = [other.vx - ball.vx, other.vy - ball.vy];
+            toi::straight(offset, velocity, reach, end)
         } else {
-            now + time
+            // The other ball as it will be now, so both flights start at the same moment.
+            let mut there = Ball::new(other.x, other.y, other.vx, other.vy, other.radius, 0);
+            if behind > 0.0 {
+                step.integrator.fly(&mut there, &self.flight[j], behind);
+            }
+            let theirs = step.integrator.path(&there, &self.flight[j]);
+            let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis].minus_poly(&path[axis]));
+            toi::first_touch(&relative, reach, end)
         };
-        self.queue.set(i, time, what);
+        touch.filter(|&time| time < end)
     }
 
     /// Bounces balls `i` and `j`, which touch now, along the line through their centres.
