@@ -218,6 +218,8 @@ impl ContactSolver {
             rest_speed: REST_SPEED * gravity / LESSON_GRAVITY,
         };
         let dt = 1.0 / f64::from(steps);
+        // Without gravity or drag every ball flies in a straight line between contacts.
+        let free = whole.gravity.is_none() && whole.drag.is_none();
         for _ in 0..steps {
             tally(Work::Contacts);
             self.find(scene_balls, effects, dt);
@@ -239,6 +241,9 @@ impl ContactSolver {
                 let active = &self.active[island.balls.clone()];
                 let pairs = &mut self.pairs[island.pairs.clone()];
                 let fixed = &mut self.fixed[island.fixed.clone()];
+                if free && solve_free_island((active, pairs, fixed), balls, motion, &whole, sub) {
+                    continue;
+                }
                 for _ in 0..iterations {
                     for &i in active {
                         motion.integrator.kick_before(&mut balls[i], &forces);
@@ -490,6 +495,71 @@ fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut
     }
 }
 
+/// Solves an island in one go, if it can: when no force acts (the caller checks) its balls
+/// fly in straight lines, so when each contact touches has a closed form. If none touches
+/// within the step, the balls just fly; if the island is a single contact, it is solved once,
+/// exactly when it touches, instead of once per sub-step. Returns `false`, having changed
+/// nothing, for an island where a contact already touches (it needs the position pass) or
+/// one of several contacts touches within the step: those take the sub-steps.
+fn solve_free_island(
+    island: (&[usize], &mut [PairContact], &mut [FixedContact]),
+    balls: &mut [Ball],
+    motion: &Motion,
+    whole: &Forces,
+    sub: SubStep,
+) -> bool {
+    let (active, pairs, fixed) = island;
+    let touches = pairs.iter().map(|contact| contact.touch_time(balls));
+    let touches = touches.chain(
+        fixed
+            .iter()
+            .map(|contact| contact.touch_time(&balls[contact.ball])),
+    );
+    let mut first = f64::INFINITY;
+    for touch in touches {
+        match touch {
+            Some(touch) => first = first.min(touch),
+            None => return false,
+        }
+    }
+    let dt = whole.dt;
+    if first >= dt {
+        for &i in active {
+            motion.integrator.step(&mut balls[i], whole);
+        }
+        return true;
+    }
+    let fly = |ball: &mut Ball, time: f64| motion.integrator.fly(ball, whole, time);
+    // The rest of the step after the touch: the sub-step the contact is solved for.
+    let sub = SubStep {
+        h: dt - first,
+        ..sub
+    };
+    // They touch now: a rounding error's gap must not spare them the bounce.
+    match (pairs, fixed) {
+        ([contact], []) => {
+            let (a, b) = two(balls, contact.a, contact.b);
+            fly(a, first);
+            fly(b, first);
+            let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
+            (contact.state.separation, contact.state.normal) = (separation.min(0.0), normal);
+            contact.solve_velocity(a, b, sub);
+            fly(a, sub.h);
+            fly(b, sub.h);
+            true
+        }
+        ([], [contact]) => {
+            let ball = &mut balls[contact.ball];
+            fly(ball, first);
+            contact.state.separation = contact.gap(ball).min(0.0);
+            contact.solve_velocity(ball, sub);
+            fly(ball, sub.h);
+            true
+        }
+        _ => false,
+    }
+}
+
 /// One Gauss–Seidel pass over every contact's velocity.
 fn solve_velocities(
     pairs: &mut [PairContact],
@@ -499,17 +569,10 @@ fn solve_velocities(
 ) {
     for contact in pairs.iter_mut() {
         let (a, b) = two(balls, contact.a, contact.b);
-        let [nx, ny] = contact.state.normal;
-        let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
-        let change = contact.state.solve(speed, sub);
-        contact.push_velocities(a, b, change);
+        contact.solve_velocity(a, b, sub);
     }
     for contact in fixed.iter_mut() {
-        let ball = &mut balls[contact.ball];
-        let [nx, ny] = contact.state.normal;
-        let change = contact.state.solve(ball.vx * nx + ball.vy * ny, sub) / contact.state.mass;
-        ball.vx += change * nx;
-        ball.vy += change * ny;
+        contact.solve_velocity(&mut balls[contact.ball], sub);
     }
 }
 
@@ -588,6 +651,40 @@ impl ContactState {
 }
 
 impl PairContact {
+    /// The velocity pass for this contact.
+    fn solve_velocity(&mut self, a: &mut Ball, b: &mut Ball, sub: SubStep) {
+        let [nx, ny] = self.state.normal;
+        let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
+        let change = self.state.solve(speed, sub);
+        self.push_velocities(a, b, change);
+    }
+
+    /// When the balls, flying straight, first touch (infinite if never, 0 if they touch
+    /// now); `None` if they overlap by more than the slop, which the position pass handles.
+    fn touch_time(&self, balls: &[Ball]) -> Option<f64> {
+        let (a, b) = (&balls[self.a], &balls[self.b]);
+        let p = [b.x - a.x, b.y - a.y];
+        let v = [b.vx - a.vx, b.vy - a.vy];
+        // |p + v·t| = reach: a quadratic in t, whose smaller root is the touch.
+        let gap = dot(p, p) - self.reach * self.reach;
+        let closing = dot(p, v);
+        if gap <= 0.0 {
+            // A pair that has just bounced touches still, or overlaps by a rounding error.
+            let closest = self.reach * (1.0 - SLOP / 2.0);
+            return match closing {
+                _ if dot(p, p) < closest * closest => None,
+                c if c < 0.0 => Some(0.0),
+                _ => Some(f64::INFINITY),
+            };
+        }
+        let discriminant = closing * closing - dot(v, v) * gap;
+        if closing >= 0.0 || discriminant < 0.0 {
+            return Some(f64::INFINITY);
+        }
+        // `gap / (−p·v + √…)` is that root without cancellation.
+        Some(gap / (-closing + discriminant.sqrt()))
+    }
+
     /// Gives `b` the impulse `impulse` along the normal and `a` the opposite one.
     fn push_velocities(&self, a: &mut Ball, b: &mut Ball, impulse: f64) {
         let [nx, ny] = self.state.normal;
@@ -600,6 +697,26 @@ impl PairContact {
 }
 
 impl FixedContact {
+    /// The velocity pass for this contact.
+    fn solve_velocity(&mut self, ball: &mut Ball, sub: SubStep) {
+        let [nx, ny] = self.state.normal;
+        let change = self.state.solve(ball.vx * nx + ball.vy * ny, sub) / self.state.mass;
+        ball.vx += change * nx;
+        ball.vy += change * ny;
+    }
+
+    /// When the ball, flying straight, reaches the line (infinite if never, 0 if it touches
+    /// now); `None` if it is past the line by more than the slop.
+    fn touch_time(&self, ball: &Ball) -> Option<f64> {
+        let separation = self.gap(ball);
+        let approach = dot([ball.vx, ball.vy], self.state.normal);
+        match separation {
+            s if s < -SLOP * ball.radius => None,
+            _ if approach >= 0.0 => Some(f64::INFINITY),
+            s => Some((-s / approach).max(0.0)),
+        }
+    }
+
     /// The gap between the ball and the line, px.
     fn gap(&self, ball: &Ball) -> f64 {
         dot([ball.x, ball.y], self.state.normal) - self.offset
