@@ -68,6 +68,11 @@ pub const SLOP: f64 = 0.005;
 /// the memory for them. Pairs beyond this wait for a later step, once the pile has spread.
 pub const MAX_PAIRS_PER_BALL: usize = 16;
 
+/// How many touches per contact an island without forces may take, solved one by one at
+/// their times, before it is solved in sub-steps instead: a chain of balls passes a blow
+/// along in a few touches; more means a cluster that keeps colliding.
+const TOUCHES_PER_CONTACT: usize = 4;
+
 /// Share of the overlap beyond the slop the position pass removes each sub-step (Box2D's
 /// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
 const PUSH: f64 = 0.2;
@@ -149,6 +154,8 @@ pub struct ContactSolver {
     island_of: Vec<usize>,
     spare_pairs: Vec<PairContact>,
     spare_fixed: Vec<FixedContact>,
+    /// Where an island's balls were, for when it cannot be solved touch by touch.
+    saved: Vec<[f64; 4]>,
 }
 
 /// A group of balls joined by pair contacts, directly or through others, that touches no
@@ -202,6 +209,7 @@ impl ContactSolver {
             island_of: Vec::new(),
             spare_pairs: Vec::new(),
             spare_fixed: Vec::new(),
+            saved: Vec::new(),
         }
     }
 
@@ -241,7 +249,9 @@ impl ContactSolver {
                 let active = &self.active[island.balls.clone()];
                 let pairs = &mut self.pairs[island.pairs.clone()];
                 let fixed = &mut self.fixed[island.fixed.clone()];
-                if free && solve_free_island((active, pairs, fixed), balls, motion, &whole, sub) {
+                let island = (active, &mut *pairs, &mut *fixed);
+                let setting = (motion, &whole, sub);
+                if free && solve_free_island(island, balls, setting, &mut self.saved) {
                     continue;
                 }
                 for _ in 0..iterations {
@@ -495,69 +505,85 @@ fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut
     }
 }
 
-/// Solves an island in one go, if it can: when no force acts (the caller checks) its balls
-/// fly in straight lines, so when each contact touches has a closed form. If none touches
-/// within the step, the balls just fly; if the island is a single contact, it is solved once,
-/// exactly when it touches, instead of once per sub-step. Returns `false`, having changed
-/// nothing, for an island where a contact already touches (it needs the position pass) or
-/// one of several contacts touches within the step: those take the sub-steps.
+/// Solves an island touch by touch, if it can. When no force acts (the caller checks) the
+/// balls fly in straight lines, so when each contact touches has a closed form: the island
+/// flies to the first touch, that contact alone is solved there, and so on to the end of the
+/// step, instead of every contact once per sub-step. Returns `false`, with the balls as they
+/// were, when a contact overlaps beyond the slop (it needs the position pass) or the island
+/// has more than [`TOUCHES_PER_CONTACT`] touches per contact (a cluster that keeps
+/// colliding): those take the sub-steps. `saved` is scratch space.
 fn solve_free_island(
     island: (&[usize], &mut [PairContact], &mut [FixedContact]),
     balls: &mut [Ball],
-    motion: &Motion,
-    whole: &Forces,
-    sub: SubStep,
+    (motion, whole, sub): (&Motion, &Forces, SubStep),
+    saved: &mut Vec<[f64; 4]>,
 ) -> bool {
     let (active, pairs, fixed) = island;
+    saved.clear();
+    saved.extend(active.iter().map(|&i| {
+        let ball = &balls[i];
+        [ball.x, ball.y, ball.vx, ball.vy]
+    }));
+    let fly = |balls: &mut [Ball], time: f64| {
+        for &i in active {
+            motion.integrator.fly(&mut balls[i], whole, time);
+        }
+    };
+    let mut left = whole.dt;
+    for _ in 0..TOUCHES_PER_CONTACT * (pairs.len() + fixed.len()) {
+        let Some((first, touch)) = first_touch(pairs, fixed, balls) else {
+            break;
+        };
+        if touch >= left {
+            fly(balls, left);
+            return true;
+        }
+        fly(balls, touch);
+        left -= touch;
+        // The rest of the step after the touch is the sub-step the contact is solved for.
+        let sub = SubStep { h: left, ..sub };
+        // They touch now: a rounding error's gap must not spare them the bounce.
+        if first < pairs.len() {
+            let contact = &mut pairs[first];
+            let (a, b) = two(balls, contact.a, contact.b);
+            let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
+            (contact.state.separation, contact.state.normal) = (separation.min(0.0), normal);
+            contact.solve_velocity(a, b, sub);
+        } else {
+            let contact = &mut fixed[first - pairs.len()];
+            let ball = &mut balls[contact.ball];
+            contact.state.separation = contact.gap(ball).min(0.0);
+            contact.solve_velocity(ball, sub);
+        }
+    }
+    for (&i, &[x, y, vx, vy]) in active.iter().zip(saved.iter()) {
+        let ball = &mut balls[i];
+        (ball.x, ball.y, ball.vx, ball.vy) = (x, y, vx, vy);
+    }
+    false
+}
+
+/// The contact of `pairs` then `fixed` (numbered in that order) that touches first, and when;
+/// `None` if one overlaps beyond the slop.
+fn first_touch(
+    pairs: &[PairContact],
+    fixed: &[FixedContact],
+    balls: &[Ball],
+) -> Option<(usize, f64)> {
     let touches = pairs.iter().map(|contact| contact.touch_time(balls));
     let touches = touches.chain(
         fixed
             .iter()
             .map(|contact| contact.touch_time(&balls[contact.ball])),
     );
-    let mut first = f64::INFINITY;
-    for touch in touches {
-        match touch {
-            Some(touch) => first = first.min(touch),
-            None => return false,
+    let mut first = (0, f64::INFINITY);
+    for (k, touch) in touches.enumerate() {
+        let touch = touch?;
+        if touch < first.1 {
+            first = (k, touch);
         }
     }
-    let dt = whole.dt;
-    if first >= dt {
-        for &i in active {
-            motion.integrator.step(&mut balls[i], whole);
-        }
-        return true;
-    }
-    let fly = |ball: &mut Ball, time: f64| motion.integrator.fly(ball, whole, time);
-    // The rest of the step after the touch: the sub-step the contact is solved for.
-    let sub = SubStep {
-        h: dt - first,
-        ..sub
-    };
-    // They touch now: a rounding error's gap must not spare them the bounce.
-    match (pairs, fixed) {
-        ([contact], []) => {
-            let (a, b) = two(balls, contact.a, contact.b);
-            fly(a, first);
-            fly(b, first);
-            let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
-            (contact.state.separation, contact.state.normal) = (separation.min(0.0), normal);
-            contact.solve_velocity(a, b, sub);
-            fly(a, sub.h);
-            fly(b, sub.h);
-            true
-        }
-        ([], [contact]) => {
-            let ball = &mut balls[contact.ball];
-            fly(ball, first);
-            contact.state.separation = contact.gap(ball).min(0.0);
-            contact.solve_velocity(ball, sub);
-            fly(ball, sub.h);
-            true
-        }
-        _ => false,
-    }
+    Some(first)
 }
 
 /// One Gauss–Seidel pass over every contact's velocity.
