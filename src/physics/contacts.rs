@@ -19,8 +19,13 @@
 //! 2. **Islands**: the balls with contacts fall into islands, balls joined by pair contacts
 //!    directly or through others. Islands share no ball, so each is solved on its own, all
 //!    its sub-steps at once, while its balls are in the cache (the numbers are the same as
-//!    one sweep over every contact). Then, for each island, `iterations` times, for a
-//!    sub-step `h` of the step:
+//!    one sweep over every contact).
+//! 3. **Without gravity or drag**, balls fly straight between contacts, so an island is
+//!    solved touch by touch: it flies to the time its first contact touches (a closed
+//!    form), that contact alone is solved, and so on to the end of the step. An island that
+//!    already overlaps, or keeps colliding, is put back and takes the sub-steps.
+//! 4. **Sub-steps**: otherwise, for each island, `iterations` times, for a sub-step `h` of
+//!    the step:
 //!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
 //!    - **Warm start** (under gravity only): each contact pushes again with its total impulse
 //!      of the sub-step before (the previous step's, at first). A stack that stood then
