@@ -19,8 +19,13 @@
 //! 2. **Islands**: the balls with contacts fall into islands, balls joined by pair contacts
 //!    directly or through others. Islands share no ball, so each is solved on its own, all
 //!    its sub-steps at once, while its balls are in the cache (the numbers are the same as
-//!    one sweep over every contact). Then, for each island, `iterations` times, for a
-//!    sub-step `h` of the step:
+//!    one sweep over every contact).
+//! 3. **Without gravity or drag**, balls fly straight between contacts, so an island is
+//!    solved touch by touch: it flies to the time its first contact touches (a closed
+//!    form), that contact alone is solved, and so on to the end of the step. An island that
+//!    already overlaps, or keeps colliding, is put back and takes the sub-steps.
+//! 4. **Sub-steps**: otherwise, for each island, `iterations` times, for a sub-step `h` of
+//!    the step:
 //!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
 //!    - **Warm start** (under gravity only): each contact pushes again with its total impulse
 //!      of the sub-step before (the previous step's, at first). A stack that stood then
@@ -67,6 +72,11 @@ pub const SLOP: f64 = 0.005;
 /// most six neighbours each; balls spawned on top of one another could make N² pairs, and
 /// the memory for them. Pairs beyond this wait for a later step, once the pile has spread.
 pub const MAX_PAIRS_PER_BALL: usize = 16;
+
+/// How many touches per contact an island without forces may take, solved one by one at
+/// their times, before it is solved in sub-steps instead: a chain of balls passes a blow
+/// along in a few touches; more means a cluster that keeps colliding.
+const TOUCHES_PER_CONTACT: usize = 4;
 
 /// Share of the overlap beyond the slop the position pass removes each sub-step (Box2D's
 /// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
@@ -149,6 +159,8 @@ pub struct ContactSolver {
     island_of: Vec<usize>,
     spare_pairs: Vec<PairContact>,
     spare_fixed: Vec<FixedContact>,
+    /// Where an island's balls were, for when it cannot be solved touch by touch.
+    saved: Vec<[f64; 4]>,
 }
 
 /// A group of balls joined by pair contacts, directly or through others, that touches no
@@ -202,6 +214,7 @@ impl ContactSolver {
             island_of: Vec::new(),
             spare_pairs: Vec::new(),
             spare_fixed: Vec::new(),
+            saved: Vec::new(),
         }
     }
 
@@ -218,6 +231,8 @@ impl ContactSolver {
             rest_speed: REST_SPEED * gravity / LESSON_GRAVITY,
         };
         let dt = 1.0 / f64::from(steps);
+        // Without gravity or drag every ball flies in a straight line between contacts.
+        let free = whole.gravity.is_none() && whole.drag.is_none();
         for _ in 0..steps {
             tally(Work::Contacts);
             self.find(scene_balls, effects, dt);
@@ -239,6 +254,11 @@ impl ContactSolver {
                 let active = &self.active[island.balls.clone()];
                 let pairs = &mut self.pairs[island.pairs.clone()];
                 let fixed = &mut self.fixed[island.fixed.clone()];
+                let island = (active, &mut *pairs, &mut *fixed);
+                let setting = (motion, &whole, sub);
+                if free && solve_free_island(island, balls, setting, &mut self.saved) {
+                    continue;
+                }
                 for _ in 0..iterations {
                     for &i in active {
                         motion.integrator.kick_before(&mut balls[i], &forces);
@@ -490,6 +510,87 @@ fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut
     }
 }
 
+/// Solves an island touch by touch, if it can. When no force acts (the caller checks) the
+/// balls fly in straight lines, so when each contact touches has a closed form: the island
+/// flies to the first touch, that contact alone is solved there, and so on to the end of the
+/// step, instead of every contact once per sub-step. Returns `false`, with the balls as they
+/// were, when a contact overlaps beyond the slop (it needs the position pass) or the island
+/// has more than [`TOUCHES_PER_CONTACT`] touches per contact (a cluster that keeps
+/// colliding): those take the sub-steps. `saved` is scratch space.
+fn solve_free_island(
+    island: (&[usize], &mut [PairContact], &mut [FixedContact]),
+    balls: &mut [Ball],
+    (motion, whole, sub): (&Motion, &Forces, SubStep),
+    saved: &mut Vec<[f64; 4]>,
+) -> bool {
+    let (active, pairs, fixed) = island;
+    saved.clear();
+    saved.extend(active.iter().map(|&i| {
+        let ball = &balls[i];
+        [ball.x, ball.y, ball.vx, ball.vy]
+    }));
+    let fly = |balls: &mut [Ball], time: f64| {
+        for &i in active {
+            motion.integrator.fly(&mut balls[i], whole, time);
+        }
+    };
+    let mut left = whole.dt;
+    for _ in 0..TOUCHES_PER_CONTACT * (pairs.len() + fixed.len()) {
+        let Some((first, touch)) = first_touch(pairs, fixed, balls) else {
+            break;
+        };
+        if touch >= left {
+            fly(balls, left);
+            return true;
+        }
+        fly(balls, touch);
+        left -= touch;
+        // The rest of the step after the touch is the sub-step the contact is solved for.
+        let sub = SubStep { h: left, ..sub };
+        // They touch now: a rounding error's gap must not spare them the bounce.
+        if first < pairs.len() {
+            let contact = &mut pairs[first];
+            let (a, b) = two(balls, contact.a, contact.b);
+            let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
+            (contact.state.separation, contact.state.normal) = (separation.min(0.0), normal);
+            contact.solve_velocity(a, b, sub);
+        } else {
+            let contact = &mut fixed[first - pairs.len()];
+            let ball = &mut balls[contact.ball];
+            contact.state.separation = contact.gap(ball).min(0.0);
+            contact.solve_velocity(ball, sub);
+        }
+    }
+    for (&i, &[x, y, vx, vy]) in active.iter().zip(saved.iter()) {
+        let ball = &mut balls[i];
+        (ball.x, ball.y, ball.vx, ball.vy) = (x, y, vx, vy);
+    }
+    false
+}
+
+/// The contact of `pairs` then `fixed` (numbered in that order) that touches first, and when;
+/// `None` if one overlaps beyond the slop.
+fn first_touch(
+    pairs: &[PairContact],
+    fixed: &[FixedContact],
+    balls: &[Ball],
+) -> Option<(usize, f64)> {
+    let touches = pairs.iter().map(|contact| contact.touch_time(balls));
+    let touches = touches.chain(
+        fixed
+            .iter()
+            .map(|contact| contact.touch_time(&balls[contact.ball])),
+    );
+    let mut first = (0, f64::INFINITY);
+    for (k, touch) in touches.enumerate() {
+        let touch = touch?;
+        if touch < first.1 {
+            first = (k, touch);
+        }
+    }
+    Some(first)
+}
+
 /// One Gauss–Seidel pass over every contact's velocity.
 fn solve_velocities(
     pairs: &mut [PairContact],
@@ -499,17 +600,10 @@ fn solve_velocities(
 ) {
     for contact in pairs.iter_mut() {
         let (a, b) = two(balls, contact.a, contact.b);
-        let [nx, ny] = contact.state.normal;
-        let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
-        let change = contact.state.solve(speed, sub);
-        contact.push_velocities(a, b, change);
+        contact.solve_velocity(a, b, sub);
     }
     for contact in fixed.iter_mut() {
-        let ball = &mut balls[contact.ball];
-        let [nx, ny] = contact.state.normal;
-        let change = contact.state.solve(ball.vx * nx + ball.vy * ny, sub) / contact.state.mass;
-        ball.vx += change * nx;
-        ball.vy += change * ny;
+        contact.solve_velocity(&mut balls[contact.ball], sub);
     }
 }
 
@@ -588,6 +682,40 @@ impl ContactState {
 }
 
 impl PairContact {
+    /// The velocity pass for this contact.
+    fn solve_velocity(&mut self, a: &mut Ball, b: &mut Ball, sub: SubStep) {
+        let [nx, ny] = self.state.normal;
+        let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
+        let change = self.state.solve(speed, sub);
+        self.push_velocities(a, b, change);
+    }
+
+    /// When the balls, flying straight, first touch (infinite if never, 0 if they touch
+    /// now); `None` if they overlap by more than the slop, which the position pass handles.
+    fn touch_time(&self, balls: &[Ball]) -> Option<f64> {
+        let (a, b) = (&balls[self.a], &balls[self.b]);
+        let p = [b.x - a.x, b.y - a.y];
+        let v = [b.vx - a.vx, b.vy - a.vy];
+        // |p + v·t| = reach: a quadratic in t, whose smaller root is the touch.
+        let gap = dot(p, p) - self.reach * self.reach;
+        let closing = dot(p, v);
+        if gap <= 0.0 {
+            // A pair that has just bounced touches still, or overlaps by a rounding error.
+            let closest = self.reach * (1.0 - SLOP / 2.0);
+            return match closing {
+                _ if dot(p, p) < closest * closest => None,
+                c if c < 0.0 => Some(0.0),
+                _ => Some(f64::INFINITY),
+            };
+        }
+        let discriminant = closing * closing - dot(v, v) * gap;
+        if closing >= 0.0 || discriminant < 0.0 {
+            return Some(f64::INFINITY);
+        }
+        // `gap / (−p·v + √…)` is that root without cancellation.
+        Some(gap / (-closing + discriminant.sqrt()))
+    }
+
     /// Gives `b` the impulse `impulse` along the normal and `a` the opposite one.
     fn push_velocities(&self, a: &mut Ball, b: &mut Ball, impulse: f64) {
         let [nx, ny] = self.state.normal;
@@ -600,6 +728,26 @@ impl PairContact {
 }
 
 impl FixedContact {
+    /// The velocity pass for this contact.
+    fn solve_velocity(&mut self, ball: &mut Ball, sub: SubStep) {
+        let [nx, ny] = self.state.normal;
+        let change = self.state.solve(ball.vx * nx + ball.vy * ny, sub) / self.state.mass;
+        ball.vx += change * nx;
+        ball.vy += change * ny;
+    }
+
+    /// When the ball, flying straight, reaches the line (infinite if never, 0 if it touches
+    /// now); `None` if it is past the line by more than the slop.
+    fn touch_time(&self, ball: &Ball) -> Option<f64> {
+        let separation = self.gap(ball);
+        let approach = dot([ball.vx, ball.vy], self.state.normal);
+        match separation {
+            s if s < -SLOP * ball.radius => None,
+            _ if approach >= 0.0 => Some(f64::INFINITY),
+            s => Some((-s / approach).max(0.0)),
+        }
+    }
+
     /// The gap between the ball and the line, px.
     fn gap(&self, ball: &Ball) -> f64 {
         dot([ball.x, ball.y], self.state.normal) - self.offset
