@@ -39,7 +39,8 @@ pub struct Encoding {
 /// allocates once warmed up: the LZW coder and scratch buffers.
 #[derive(Default)]
 pub struct Coder {
-    lzw: Lzw,
+    /// Made on the first frame, by the thread that codes (its 2 MB are written out then).
+    lzw: Option<Lzw>,
     /// A layout's indices, in normal row order.
     layout: Vec<u8>,
     /// The same in interlaced order.
@@ -64,6 +65,7 @@ impl Coder {
         table_len: usize,
         best: &mut Vec<u8>,
     ) -> Encoding {
+        let lzw = self.lzw.get_or_insert_with(Lzw::new);
         let runs_as_is = runs(current);
         // Marking removes at most one run per pair of neighbouring unchanged pixels of two
         // colours: when those are too few, no marked layout can pass its test, so none is made.
@@ -120,10 +122,8 @@ impl Coder {
                     &self.layout
                 };
                 let greedy = Choices::GREEDY;
-                let coded = self
-                    .lzw
-                    .compress(size, pixels, greedy, budget, &mut self.candidate);
-                let forks = self.lzw.forks();
+                let coded = lzw.compress(size, pixels, greedy, budget, &mut self.candidate);
+                let forks = lzw.forks();
                 let mut won = coded.is_some();
                 if won {
                     swap(best, &mut self.candidate);
@@ -134,7 +134,7 @@ impl Coder {
                 if let Some(fork) = forks.full {
                     let first = if won { &best[..] } else { &self.candidate[..] };
                     let keep_full = Choices::KEEP_FULL;
-                    let coded = self.lzw.compress_from(
+                    let coded = lzw.compress_from(
                         fork,
                         keep_full,
                         size,
@@ -165,7 +165,7 @@ impl Coder {
         }
         // The best coding's bytes are the greedy coding's up to the small fork.
         if let Some(fork) = winner_small_fork {
-            let coded = self.lzw.compress_from(
+            let coded = lzw.compress_from(
                 fork,
                 Choices::SMALL,
                 code_size,
