@@ -96,6 +96,12 @@ pub struct Lzw {
     /// The entries of `next` set since the last clear.
     set: Vec<usize>,
     forks: Forks,
+    /// How many of the table's rows (one per byte) have been written. Memory the system
+    /// hands over zeroed is mapped to one shared zero page until first written; a coder reads
+    /// an entry before it writes it, so each page would fault twice, the second time stopping
+    /// the other cores to flush their address caches (a tenth of a default run's time went
+    /// there). So the rows an image can use are written out before it is coded.
+    rows_written: usize,
     /// How many codings the coder has begun, and the last one's dictionary where it was
     /// first full (`set` then): a coding that keeps it full goes on from there.
     codings: u64,
@@ -112,7 +118,11 @@ impl Lzw {
     /// A coder with an empty dictionary.
     pub fn new() -> Lzw {
         Lzw {
-            next: written_zeros(),
+            next: vec![0; TABLE_LEN]
+                .into_boxed_slice()
+                .try_into()
+                .expect("a table of TABLE_LEN entries"),
+            rows_written: 0,
             set: Vec::with_capacity(usize::from(MAX_CODES)),
             forks: Forks::default(),
             codings: 0,
@@ -145,6 +155,7 @@ impl Lzw {
         bits.put(1 << min_code_size, start.width);
         self.forks = Forks::default();
         self.codings += 1;
+        self.write_rows(1 << min_code_size);
         self.code(start, min_code_size, pixels, choices, budget, bits)
     }
 
@@ -244,6 +255,17 @@ impl Lzw {
         (written < budget).then_some(state.most.max(state.free))
     }
 
+    /// Writes the table's rows for bytes below `rows` out, if not yet done.
+    fn write_rows(&mut self, rows: usize) {
+        if rows > self.rows_written {
+            let new_rows =
+                &mut self.next[self.rows_written << MAX_CODE_BITS..rows << MAX_CODE_BITS];
+            // `black_box` hides that the memory is zero already, so the writes are not left out.
+            std::hint::black_box(new_rows).fill(0);
+            self.rows_written = rows;
+        }
+    }
+
     /// Keeps where the dictionary first reached the small size, and where it was first full.
     fn note_fork(&mut self, state: Coding, bits: &BitPacker) {
         let fork = match state.free {
@@ -286,20 +308,6 @@ impl Lzw {
             self.next[slot] = 0;
         }
     }
-}
-
-/// A table of zeros written out at once. Memory the system hands over zeroed is mapped to
-/// one shared zero page until first written; a coder reads a table entry before it writes
-/// it, so every page would fault twice, the second time stopping the other cores to flush
-/// their address caches (a tenth of a default run's time went there).
-fn written_zeros() -> Box<[u16; TABLE_LEN]> {
-    let mut table = vec![0; TABLE_LEN];
-    // `black_box` hides that the memory is zero already, so the writes are not left out.
-    std::hint::black_box(&mut table).fill(0);
-    table
-        .into_boxed_slice()
-        .try_into()
-        .expect("a table of TABLE_LEN entries")
 }
 
 /// Writes a clear code and starts the codes afresh (the caller empties the dictionary).
