@@ -41,11 +41,12 @@ pub struct Encoding {
 pub struct Coder {
     /// Made on the first frame, by the thread that codes (its 2 MB are written out then).
     lzw: Option<Lzw>,
-    /// A layout's indices, in normal row order.
+    /// A marked layout's indices, in normal row order.
     layout: Vec<u8>,
     /// The same in interlaced order.
     interlaced: Vec<u8>,
-    /// The winning layout so far, in the order it is stored.
+    /// The winning layout so far, in the order it is stored, when the small dictionary is
+    /// to be tried on it.
     winner: Vec<u8>,
     /// A candidate's compressed bytes, and another's made from the first part of them.
     candidate: Vec<u8>,
@@ -83,11 +84,7 @@ impl Coder {
         let mut mixed_tried = false;
         for layout in [Layout::AsIs, Layout::MixedStretches, Layout::AllUnchanged] {
             let largest_index = match (layout, transparent) {
-                (Layout::AsIs, _) => {
-                    self.layout.clear();
-                    self.layout.extend_from_slice(current);
-                    largest(current)
-                }
+                (Layout::AsIs, _) => largest(current),
                 (_, None) => continue,
                 (_, Some((under, index))) => {
                     let marked = match layout {
@@ -114,13 +111,13 @@ impl Coder {
                 }
             };
             let size = min_code_size(usize::from(largest_index) + 1);
-            interlace(&self.layout, width, &mut self.interlaced);
+            let normal = match layout {
+                Layout::AsIs => current,
+                _ => &self.layout[..],
+            };
+            interlace(normal, width, &mut self.interlaced);
             for interlaced in [false, true] {
-                let pixels = if interlaced {
-                    &self.interlaced
-                } else {
-                    &self.layout
-                };
+                let pixels = if interlaced { &self.interlaced } else { normal };
                 let greedy = Choices::GREEDY;
                 let coded = lzw.compress(size, pixels, greedy, budget, &mut self.candidate);
                 let forks = lzw.forks();
@@ -153,7 +150,10 @@ impl Coder {
                 }
                 if won {
                     winner_small_fork = forks.small.filter(|_| codes > SMALL_DICTIONARY_FROM);
-                    self.winner.clone_from(pixels);
+                    if winner_small_fork.is_some() {
+                        self.winner.clear();
+                        self.winner.extend_from_slice(pixels);
+                    }
                     code_size = size;
                     chosen = Encoding {
                         transparent: match layout {
@@ -185,8 +185,8 @@ impl Coder {
 }
 
 /// The small dictionary is tried only on a frame whose best coding held more codes than
-/// this, one and a half times its own size: on frames below it saved about a byte a frame
-/// (the lesson's 200 frames: 131 B of 119 kB) for a sixth of the encoder's time.
+/// this, one and a half times its own size: on frames below it saved a few bytes at most
+/// (the lesson's 200 frames: 29 B of 119 kB) for a sixth of the encoder's time.
 pub const SMALL_DICTIONARY_FROM: u16 = 768;
 
 /// Which pixels of the changed rectangle a layout writes as transparent.

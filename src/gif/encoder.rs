@@ -202,7 +202,8 @@ impl<W: Write> GifWriter<W> {
         })
     }
 
-    /// Queues one frame (the canvas's size), writing the queue when it is full.
+    /// Queues one frame (the canvas's size), sending the queue to be encoded when it is full
+    /// or the encoder is free.
     pub fn write_frame(&mut self, frame: &IndexedFrame) -> io::Result<()> {
         if frame.dimensions() != (self.width, self.height) {
             return Err(io::Error::new(
@@ -357,9 +358,7 @@ impl<W: Write> GifWriter<W> {
 
     /// Encodes every frame queued so far and writes them in order.
     pub fn flush(&mut self) -> io::Result<()> {
-        if self.filling.queued > 0 {
-            self.hand_over()?;
-        }
+        self.send_queued()?;
         self.collect()
     }
 

@@ -12,7 +12,10 @@
 //! the codes.
 //!
 //! Clearing the dictionary earlier than GIF requires keeps the output valid and can make it
-//! smaller: a small dictionary has short codes ([`Choices::max_codes`]).
+//! smaller: a small dictionary has short codes ([`Choices::max_codes`]). So can keeping a
+//! full dictionary to the end instead of clearing it ([`Choices::clear_when_full`]). Codings
+//! with other choices write the same bytes as the plain one until their dictionaries part,
+//! so they start from there ([`Fork`]).
 
 /// GIF codes are at most 12 bits wide.
 const MAX_CODE_BITS: u8 = 12;
@@ -76,6 +79,19 @@ struct Coding {
     width: u8,
     free: u16,
     most: u16,
+}
+
+impl Coding {
+    /// The start of an image: an empty dictionary, whose first free code comes after the
+    /// indices, the clear code and the end code.
+    fn fresh(min_code_size: u8) -> Coding {
+        Coding {
+            at: 0,
+            width: min_code_size + 1,
+            free: (1 << min_code_size) + 2,
+            most: 0,
+        }
+    }
 }
 
 /// The last coding's forks: where its dictionary first held [`Choices::SMALL`]'s number of
@@ -146,12 +162,7 @@ impl Lzw {
         out.clear();
         out.push(min_code_size);
         let mut bits = BitPacker::new(out);
-        let start = Coding {
-            at: 0,
-            width: min_code_size + 1,
-            free: (1 << min_code_size) + 2,
-            most: 0,
-        };
+        let start = Coding::fresh(min_code_size);
         bits.put(1 << min_code_size, start.width);
         self.forks = Forks::default();
         self.codings += 1;
@@ -197,7 +208,7 @@ impl Lzw {
                 fork.coding, self.codings,
                 "a fork into a full dictionary is taken before the next coding"
             );
-            let first_code = (1 << min_code_size) + 2;
+            let first_code = Coding::fresh(min_code_size).free;
             for (code, &slot) in (first_code..).zip(&self.full_dictionary) {
                 self.next[slot] = code;
             }
@@ -318,9 +329,11 @@ fn clear_dictionary(state: &mut Coding, min_code_size: u8, bits: &mut BitPacker)
         state.width += 1;
     }
     bits.put(1 << min_code_size, state.width);
-    state.most = state.most.max(state.free);
-    state.width = min_code_size + 1;
-    state.free = (1 << min_code_size) + 2;
+    *state = Coding {
+        at: state.at,
+        most: state.most.max(state.free),
+        ..Coding::fresh(min_code_size)
+    };
 }
 
 /// Where `Lzw::next` keeps the code of string `code` followed by `byte`.
