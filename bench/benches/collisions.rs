@@ -10,12 +10,12 @@
 //! Run: `RAYON_NUM_THREADS=1 cargo bench -p bouncing_ball_bench --bench collisions` (about
 //! 30 s; the physics is single-threaded either way).
 
-use std::f64::consts::PI;
 use std::time::Duration;
 
 use bouncing_ball::scene::file::preset;
 use bouncing_ball::scene::random::Random;
-use bouncing_ball::{BallSpec, Scene};
+use bouncing_ball::Scene;
+use bouncing_ball_bench::lattice_gas;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 /// Share of the box the balls cover.
@@ -25,44 +25,11 @@ const RADII: (f64, f64) = (2.0, 4.0);
 /// Starting speeds are up to this much along each axis, px/frame.
 const MAX_SPEED: f64 = 2.0;
 
-/// `count` balls in a square box sized for the packing fraction, elastic walls and
-/// collisions, no gravity (with gravity the balls pile up on the floor within ~100 frames,
-/// and each size would be measured at a different density). Each ball starts near the middle
-/// of its own square of a lattice (jittered), so the scene starts without overlaps.
+/// `count` balls of mixed radii in the benchmarks' elastic gas (no gravity, no overlaps).
 fn scene(count: usize) -> Scene {
     let mut random = Random::new(count as u64);
     let radii: Vec<f64> = (0..count).map(|_| random.range(RADII.0, RADII.1)).collect();
-    let area: f64 = radii.iter().map(|r| PI * r * r).sum();
-    let side = (area / PACKING_FRACTION).sqrt().ceil();
-    let per_row = (count as f64).sqrt().ceil() as usize;
-    let spacing = side / per_row as f64;
-    assert!(
-        spacing > 2.0 * RADII.1,
-        "the lattice is too tight to start without overlaps"
-    );
-    let balls = radii
-        .iter()
-        .enumerate()
-        .map(|(i, &radius)| {
-            let slack = spacing / 2.0 - radius;
-            BallSpec {
-                x: ((i % per_row) as f64 + 0.5) * spacing + random.range(-slack, slack),
-                y: ((i / per_row) as f64 + 0.5) * spacing + random.range(-slack, slack),
-                vx: random.range(-MAX_SPEED, MAX_SPEED),
-                vy: random.range(-MAX_SPEED, MAX_SPEED),
-                radius,
-                colour: [255, 255, 255],
-                trail_colour: [255, 255, 255],
-                trail: 0,
-            }
-        })
-        .collect();
-    Scene {
-        balls,
-        walls: Some(1.0),
-        ball_collisions: Some(1.0),
-        ..Scene::empty(side as u32, side as u32)
-    }
+    lattice_gas(&radii, PACKING_FRACTION, MAX_SPEED, &mut random)
 }
 
 fn collisions(c: &mut Criterion) {

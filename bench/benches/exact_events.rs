@@ -11,12 +11,12 @@
 //!
 //! Run: `cargo bench -p bouncing_ball_bench --bench exact_events` (about 40 s).
 
-use std::f64::consts::PI;
 use std::time::Duration;
 
 use bouncing_ball::physics::motion::CollisionMode;
 use bouncing_ball::scene::random::Random;
-use bouncing_ball::{BallSpec, Scene};
+use bouncing_ball::Scene;
+use bouncing_ball_bench::lattice_gas;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 const PACKING: f64 = 0.3;
@@ -27,31 +27,12 @@ const SPEED: f64 = 2.0;
 const STIR: u32 = 20;
 
 fn gas(count: usize) -> Scene {
-    let mut random = Random::new(count as u64);
-    let side = (count as f64 * PI * RADIUS * RADIUS / PACKING)
-        .sqrt()
-        .ceil();
-    let per_row = (count as f64).sqrt().ceil() as usize;
-    let pitch = side / per_row as f64;
-    let jitter = pitch / 2.0 - RADIUS;
-    let balls = (0..count)
-        .map(|k| BallSpec {
-            x: ((k % per_row) as f64 + 0.5) * pitch + random.range(-jitter, jitter),
-            y: ((k / per_row) as f64 + 0.5) * pitch + random.range(-jitter, jitter),
-            vx: random.range(-SPEED, SPEED),
-            vy: random.range(-SPEED, SPEED),
-            radius: RADIUS,
-            colour: [255, 255, 255],
-            trail_colour: [255, 255, 255],
-            trail: 0,
-        })
-        .collect();
-    let mut scene = Scene {
-        balls,
-        walls: Some(1.0),
-        ball_collisions: Some(1.0),
-        ..Scene::empty(side as u32, side as u32)
-    };
+    let mut scene = lattice_gas(
+        &vec![RADIUS; count],
+        PACKING,
+        SPEED,
+        &mut Random::new(count as u64),
+    );
     scene.motion.collisions = CollisionMode::Exact;
     scene
 }
