@@ -345,21 +345,31 @@ impl<'a> Bounds<'a> {
         // How far the flight can carry the centre along each axis: walls and floors further
         // away are skipped without looking for roots.
         let reach = path.map(|p| p.reach(left));
-        let walls = self.sides.iter().flatten().filter_map(|side| {
+        let mut first: Option<(f64, Contact)> = None;
+        let mut keep_earliest = |found: Option<(f64, Contact)>| {
+            if let Some((time, contact)) = found {
+                if first.is_none_or(|(earliest, _)| time < earliest) {
+                    first = Some((time, contact));
+                }
+            }
+        };
+        // Plain loops rather than an iterator chain: this runs after every event.
+        for side in self.sides.iter().flatten() {
             if reach[side.axis] < side.distance(ball) {
-                return None;
+                continue;
             }
             let gap = path[side.axis]
                 .scale(-side.outward)
                 .plus(side.outward * side.contact);
-            gap.first_negative(left)
-                .map(|time| (time, Contact::Wall(*side)))
-        });
-        let floors = self
-            .floors
-            .iter()
-            .filter_map(|floor| floor_contact(floor, ball, path, left, reach));
-        walls.chain(floors).min_by(|a, b| a.0.total_cmp(&b.0))
+            keep_earliest(
+                gap.first_negative(left)
+                    .map(|time| (time, Contact::Wall(*side))),
+            );
+        }
+        for floor in self.floors {
+            keep_earliest(floor_contact(floor, ball, path, left, reach));
+        }
+        first
     }
 }
 

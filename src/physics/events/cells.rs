@@ -145,9 +145,9 @@ impl Cells {
             let index = self.at[i][a];
             let low = origin[a] + index as f64 * self.size - self.margin;
             let high = low + self.size + 2.0 * self.margin;
-            let ahead = (index + 1 < counts[a]).then_some((high, 1));
-            let behind = (index > 0).then_some((low, -1));
-            for (border, towards) in ahead.into_iter().chain(behind) {
+            // The outermost cells reach to infinity: they have no border on the outer side.
+            let borders = [(high, 1, index + 1 < counts[a]), (low, -1, index > 0)];
+            for (border, towards, _) in borders.into_iter().filter(|&(_, _, inner)| inner) {
                 if let Some(time) = crossing(&path[a], border, towards, left) {
                     if first.is_none_or(|(earliest, _, _)| time < earliest) {
                         first = Some((time, axis, towards));
@@ -179,8 +179,11 @@ fn crossing(path: &Poly, border: f64, towards: i8, left: f64) -> Option<f64> {
     let side = f64::from(towards);
     if path.degree() <= 1 {
         let (start, speed) = (path.coefficient(0), path.coefficient(1));
+        if speed * side <= 0.0 {
+            return None; // moving away from it, or not at all
+        }
         let time = ((border - start) / speed).max(0.0);
-        return (speed * side > 0.0 && time <= left).then_some(time);
+        return (time <= left).then_some(time);
     }
     // The distance to the far side of the border, which falls below zero on passing it.
     path.scale(-side).plus(side * border).first_negative(left)
