@@ -155,21 +155,28 @@ impl Integrator {
     /// Where the flight takes the centre after `τ` frames, as a polynomial in `τ` per axis:
     /// exactly the position `fly(…, τ)` computes, so its roots are the flight's times of impact.
     pub fn path(self, ball: &Ball, forces: &Forces) -> [Poly; 2] {
-        [(ball.x, ball.vx, 0), (ball.y, ball.vy, 1)].map(|(x, v, axis)| {
-            let a = forces.accel(axis, v);
-            let rate = forces.drag.map_or(0.0, |drag| drag.rate);
-            match self {
-                Integrator::ExplicitEuler | Integrator::SemiImplicitEuler => Poly::new(&[x, v]),
-                Integrator::VelocityVerlet | Integrator::Rk4 if forces.stops_dead() => {
-                    Poly::new(&[x])
-                }
-                Integrator::VelocityVerlet => Poly::new(&[x, v, a / 2.0]),
-                // RK4's four stages add up to the Taylor series of the exact flight to τ⁴.
-                Integrator::Rk4 => {
-                    Poly::new(&[x, v, a / 2.0, -a * rate / 6.0, a * rate * rate / 24.0])
-                }
+        // Two plain calls, not a `map` over the axes: predicting events builds a path after
+        // every event, and the compiler inlines these.
+        [
+            self.axis_path(ball.x, ball.vx, 0, forces),
+            self.axis_path(ball.y, ball.vy, 1, forces),
+        ]
+    }
+
+    /// `path` along one axis, from position `x` and velocity `v`.
+    #[inline]
+    fn axis_path(self, x: f64, v: f64, axis: usize, forces: &Forces) -> Poly {
+        match self {
+            Integrator::ExplicitEuler | Integrator::SemiImplicitEuler => Poly::new(&[x, v]),
+            Integrator::VelocityVerlet | Integrator::Rk4 if forces.stops_dead() => Poly::new(&[x]),
+            Integrator::VelocityVerlet => Poly::new(&[x, v, forces.accel(axis, v) / 2.0]),
+            // RK4's four stages add up to the Taylor series of the exact flight to τ⁴.
+            Integrator::Rk4 => {
+                let a = forces.accel(axis, v);
+                let rate = forces.drag.map_or(0.0, |drag| drag.rate);
+                Poly::new(&[x, v, a / 2.0, -a * rate / 6.0, a * rate * rate / 24.0])
             }
-        })
+        }
     }
 
     /// How many steps a frame of `substeps` needs so that this method stays stable under the
