@@ -145,14 +145,19 @@ impl Cells {
             let index = self.at[i][a];
             let low = origin[a] + index as f64 * self.size - self.margin;
             let high = low + self.size + 2.0 * self.margin;
-            // The outermost cells reach to infinity: they have no border on the outer side.
-            let borders = [(high, 1, index + 1 < counts[a]), (low, -1, index > 0)];
-            for (border, towards, _) in borders.into_iter().filter(|&(_, _, inner)| inner) {
+            let mut try_border = |border: f64, towards: i8| {
                 if let Some(time) = crossing(&path[a], border, towards, left) {
                     if first.is_none_or(|(earliest, _, _)| time < earliest) {
                         first = Some((time, axis, towards));
                     }
                 }
+            };
+            // The outermost cells reach to infinity: they have no border on the outer side.
+            if index + 1 < counts[a] {
+                try_border(high, 1);
+            }
+            if index > 0 {
+                try_border(low, -1);
             }
         }
         first
