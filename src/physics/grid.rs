@@ -144,6 +144,16 @@ impl Grid {
     /// row. Pairs are handed over as found rather than collected, so balls piled on top of
     /// each other (N²/2 pairs) cost time but no memory.
     pub fn for_each_overlapping_pair(&self, mut found: impl FnMut(usize, usize)) {
+        self.for_each_overlapping_place(|k, l| {
+            let (i, j) = (self.entries[k].index, self.entries[l].index);
+            found(i.min(j), i.max(j));
+        });
+    }
+
+    /// The same pairs in the same order, each ball named by its place in [`Grid::order`]
+    /// (`k < l`) rather than by its index: a caller that keeps its balls in that order finds
+    /// both balls of a pair near each other, without looking them up.
+    pub fn for_each_overlapping_place(&self, mut found: impl FnMut(usize, usize)) {
         for row in 0..self.rows {
             for column in 0..self.columns {
                 let here = self.cells(row, column, column);
@@ -152,7 +162,8 @@ impl Grid {
                 }
                 // Each pair of cells is searched once, from the upper or left one: this cell
                 // with the one to its right, and with the three below. Cells next to each other
-                // in a row are next to each other in `entries`, so each is one range.
+                // in a row are next to each other in `entries`, so each is one range, and every
+                // place in it comes after `a`.
                 let right = self.cells(row, column, (column + 1).min(self.columns - 1));
                 let below = if row + 1 < self.rows {
                     let first = column.saturating_sub(1);
@@ -181,14 +192,14 @@ impl Grid {
         self.cell_start[start + first]..self.cell_start[start + last + 1]
     }
 
-    /// Hands `found` the pairs that entry `a` makes with the overlapping entries in `others`.
+    /// Hands `found` the places of entry `a` and of each entry in `others` that overlaps it.
     fn overlaps(&self, a: usize, others: Range<usize>, found: &mut impl FnMut(usize, usize)) {
-        let a = self.entries[a];
-        for b in &self.entries[others] {
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let reach = a.radius + b.radius;
+        let entry = self.entries[a];
+        for (b, other) in others.clone().zip(&self.entries[others]) {
+            let (dx, dy) = (other.x - entry.x, other.y - entry.y);
+            let reach = entry.radius + other.radius;
             if dx * dx + dy * dy < reach * reach {
-                found(a.index.min(b.index), a.index.max(b.index));
+                found(a, b);
             }
         }
     }
