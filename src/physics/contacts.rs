@@ -184,6 +184,8 @@ pub struct ContactSolver {
     /// the contacts in the order found.
     parent: Vec<usize>,
     island_of: Vec<usize>,
+    /// The balls with a contact, in order.
+    with_contact: Vec<usize>,
     spare_pairs: Vec<PairContact>,
     spare_fixed: Vec<FixedContact>,
     /// Where an island's balls were, for when it cannot be solved touch by touch.
@@ -203,10 +205,12 @@ impl Island {
     fn ranges(&mut self) -> [&mut Range<usize>; 3] {
         [&mut self.balls, &mut self.pairs, &mut self.fixed]
     }
+}
 
-    fn starts(&self) -> [usize; 3] {
-        [self.balls.start, self.pairs.start, self.fixed.start]
-    }
+/// The next place in `range`, which grows by it.
+fn place(range: &mut Range<usize>) -> usize {
+    range.end += 1;
+    range.end - 1
 }
 
 /// `island_of` for a ball without contacts.
@@ -237,6 +241,7 @@ impl ContactSolver {
             islands: Vec::new(),
             parent: Vec::new(),
             island_of: Vec::new(),
+            with_contact: Vec::new(),
             spare_pairs: Vec::new(),
             spare_fixed: Vec::new(),
             saved: Vec::new(),
@@ -439,6 +444,7 @@ impl ContactSolver {
             island_of[ball] = 0;
         }
         self.islands.clear();
+        self.with_contact.clear();
         for ball in 0..count {
             if island_of[ball] != NO_ISLAND {
                 let first = root(parent, ball);
@@ -449,6 +455,7 @@ impl ContactSolver {
                     island_of[ball] = island_of[first]; // `first < ball`: numbered already
                 }
                 self.islands[island_of[ball]].balls.end += 1;
+                self.with_contact.push(ball);
             }
         }
         for contact in &self.pairs {
@@ -457,34 +464,28 @@ impl ContactSolver {
         for contact in &self.fixed {
             self.islands[island_of[contact.ball]].fixed.end += 1;
         }
-        // Turn the counts into ranges, one island after another.
-        let mut ends = [0; 3];
+        // Turn the counts into empty ranges where each island's balls and contacts will be,
+        // one island after another; placing one extends its island's range (a counting sort).
+        let mut starts = [0; 3];
         for island in &mut self.islands {
-            for (range, end) in island.ranges().into_iter().zip(&mut ends) {
-                *range = *end..*end + range.end;
-                *end = range.end;
+            for (range, start) in island.ranges().into_iter().zip(&mut starts) {
+                let count = range.end;
+                *range = *start..*start;
+                *start += count;
             }
         }
-        // Place each ball and contact at its island's next free place (a counting sort).
-        let mut next: Vec<[usize; 3]> = self.islands.iter().map(|i| i.starts()).collect();
-        let mut place = |island: usize, kind: usize| {
-            let place = next[island][kind];
-            next[island][kind] += 1;
-            place
-        };
-        self.active.resize(ends[0], 0);
-        for (ball, &island) in island_of.iter().enumerate() {
-            if island != NO_ISLAND {
-                self.active[place(island, 0)] = ball;
-            }
+        let islands = &mut self.islands;
+        self.active.resize(self.with_contact.len(), 0);
+        for &ball in &self.with_contact {
+            self.active[place(&mut islands[island_of[ball]].balls)] = ball;
         }
         self.spare_pairs.clone_from(&self.pairs);
         for contact in &self.spare_pairs {
-            self.pairs[place(island_of[contact.a], 1)] = *contact;
+            self.pairs[place(&mut islands[island_of[contact.a]].pairs)] = *contact;
         }
         self.spare_fixed.clone_from(&self.fixed);
         for contact in &self.spare_fixed {
-            self.fixed[place(island_of[contact.ball], 2)] = *contact;
+            self.fixed[place(&mut islands[island_of[contact.ball]].fixed)] = *contact;
         }
     }
 

@@ -195,11 +195,12 @@ impl Grid {
     /// Hands `found` the places of entry `a` and of each entry in `others` that overlaps it.
     fn overlaps(&self, a: usize, others: Range<usize>, found: &mut impl FnMut(usize, usize)) {
         let entry = self.entries[a];
-        for (b, other) in others.clone().zip(&self.entries[others]) {
+        let first = others.start;
+        for (offset, other) in self.entries[others].iter().enumerate() {
             let (dx, dy) = (other.x - entry.x, other.y - entry.y);
             let reach = entry.radius + other.radius;
             if dx * dx + dy * dy < reach * reach {
-                found(a, b);
+                found(a, first + offset);
             }
         }
     }
