@@ -32,10 +32,11 @@ pub struct Grid {
     entries: Vec<Entry>,
     /// The balls of cell `c` are `entries[cell_start[c]..cell_start[c + 1]]`.
     cell_start: Vec<usize>,
-    /// Each ball's cell and its radius grown by its margin, in the caller's order: the
-    /// counting sort's scratch space (a margin is worked out once per ball).
+    /// Each ball's cell and entry (its radius grown by its margin), in the caller's order:
+    /// the counting sort's scratch space. The balls are read once, into these compact
+    /// entries; the sort reads them instead of the balls.
     cell_of: Vec<usize>,
-    grown: Vec<f64>,
+    unsorted: Vec<Entry>,
     columns: usize,
     rows: usize,
 }
@@ -66,15 +67,21 @@ impl Grid {
         };
         let (mut left, mut top, mut right, mut bottom) = (first.x, first.y, first.x, first.y);
         let mut largest_radius = 0.0_f64;
-        self.grown.clear();
-        for ball in balls {
+        self.unsorted.clear();
+        for (index, ball) in balls.iter().enumerate() {
             left = left.min(ball.x);
             top = top.min(ball.y);
             right = right.max(ball.x);
             bottom = bottom.max(ball.y);
-            let grown = ball.radius + margin(ball);
-            largest_radius = largest_radius.max(grown);
-            self.grown.push(grown);
+            let radius = ball.radius + margin(ball);
+            largest_radius = largest_radius.max(radius);
+            let (x, y) = (ball.x, ball.y);
+            self.unsorted.push(Entry {
+                x,
+                y,
+                radius,
+                index,
+            });
         }
         let (width, height) = (right - left, bottom - top);
 
@@ -91,19 +98,17 @@ impl Grid {
         let last_column = self.columns - 1;
         let last_row = self.rows - 1;
 
-        self.cell_of.clear();
-        self.cell_of.extend(balls.iter().map(|ball| {
-            let column = (((ball.x - left) / cell) as usize).min(last_column);
-            let row = (((ball.y - top) / cell) as usize).min(last_row);
-            row * self.columns + column
-        }));
-
         // Counting sort. First count the balls in each cell, then turn the counts into a
         // running total, so `cell_start[c]` holds where cell `c` ends.
         self.cell_start.clear();
         self.cell_start.resize(self.columns * self.rows + 1, 0);
-        for &cell in &self.cell_of {
+        self.cell_of.clear();
+        for entry in &self.unsorted {
+            let column = (((entry.x - left) / cell) as usize).min(last_column);
+            let row = (((entry.y - top) / cell) as usize).min(last_row);
+            let cell = row * self.columns + column;
             self.cell_start[cell] += 1;
+            self.cell_of.push(cell);
         }
         let mut total = 0;
         for end in &mut self.cell_start {
@@ -114,15 +119,10 @@ impl Grid {
         // they keep the caller's order, and `cell_start[c]` ends up where cell `c` starts.
         self.entries.clear();
         self.entries.resize(balls.len(), Entry::default());
-        for (index, ball) in balls.iter().enumerate().rev() {
-            let slot = &mut self.cell_start[self.cell_of[index]];
+        for (entry, &cell) in self.unsorted.iter().zip(&self.cell_of).rev() {
+            let slot = &mut self.cell_start[cell];
             *slot -= 1;
-            self.entries[*slot] = Entry {
-                x: ball.x,
-                y: ball.y,
-                radius: self.grown[index],
-                index,
-            };
+            self.entries[*slot] = *entry;
         }
     }
 
