@@ -176,6 +176,8 @@ pub struct ContactSolver {
     local: Vec<Body>,
     /// `order[k]` is the scene's index of `local[k]`.
     order: Vec<usize>,
+    /// The pairs the grid finds, as places in its order.
+    places: Vec<(usize, usize)>,
     /// The balls (of `local`) with a contact this step, island by island.
     active: Vec<usize>,
     /// Where each island's balls are in `active` and its contacts in `pairs` and `fixed`.
@@ -237,6 +239,7 @@ impl ContactSolver {
             remembered: Vec::new(),
             local: Vec::new(),
             order: Vec::new(),
+            places: Vec::new(),
             active: Vec::new(),
             islands: Vec::new(),
             parent: Vec::new(),
@@ -341,38 +344,43 @@ impl ContactSolver {
         // The grid names each pair by the balls' places in its order, which are their places
         // in `local`: `a < b`, close together in memory, no lookup needed.
         self.pairs.clear();
-        let mut left = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
+        let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
+        let places = &mut self.places;
+        places.clear();
         self.grid.for_each_overlapping_place(|a, b| {
-            if left == 0 {
-                return;
+            if places.len() < limit {
+                places.push((a, b));
             }
-            left -= 1;
-            // The key names the pair by its scene indices, which do not change.
-            let (i, j) = (order[a].min(order[b]), order[a].max(order[b]));
-            let key = (j as u64) << 32 | i as u64;
+        });
+        for &(a, b) in places.iter() {
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
             let reach = ball_a.radius + ball_b.radius;
-            let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
-            let mass = mass_a * mass_b / (mass_a + mass_b);
+            // The scene's index of the later ball names the normal of balls at one spot.
             let coincident = || {
-                let (nx, ny) = coincident_normal(j);
+                let (nx, ny) = coincident_normal(order[a].max(order[b]));
                 [nx, ny]
             };
             let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
             let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
             // Both balls fall alike, but a ball pushed from above can close the gap by as
             // much as gravity moves it.
-            if can_touch(separation, approach, fall, PAIR_MARGIN * reach / 2.0) {
-                self.pairs.push(PairContact {
-                    a,
-                    b,
-                    reach,
-                    state: ContactState::new(normal, separation, self.restitution, mass, key),
-                    inverse_a: 1.0 / mass_a,
-                    inverse_b: 1.0 / mass_b,
-                });
+            if !can_touch(separation, approach, fall, PAIR_MARGIN * reach / 2.0) {
+                continue;
             }
-        });
+            // The key names the pair by its scene indices, which do not change.
+            let (i, j) = (order[a].min(order[b]), order[a].max(order[b]));
+            let key = (j as u64) << 32 | i as u64;
+            let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
+            let mass = mass_a * mass_b / (mass_a + mass_b);
+            self.pairs.push(PairContact {
+                a,
+                b,
+                reach,
+                state: ContactState::new(normal, separation, self.restitution, mass, key),
+                inverse_a: 1.0 / mass_a,
+                inverse_b: 1.0 / mass_b,
+            });
+        }
 
         self.fixed.clear();
         for (k, ball) in balls.iter().enumerate() {
