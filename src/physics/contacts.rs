@@ -275,12 +275,6 @@ impl ContactSolver {
             // then touch balls close together in memory, which keeps 100,000 balls fast.
             let mut local = std::mem::take(&mut self.local);
             let balls = &mut local[..];
-            // A ball that can touch nothing in this step takes it in one go, as in the lesson.
-            for (ball, &island) in balls.iter_mut().zip(&self.island_of) {
-                if island == NO_ISLAND {
-                    motion.integrator.step(ball, &whole);
-                }
-            }
             // Islands share no ball, so each is solved on its own, all its sub-steps at once,
             // while its few balls and contacts are in the cache.
             for island in &self.islands {
@@ -305,7 +299,13 @@ impl ContactSolver {
                     solve_positions(pairs, fixed, balls);
                 }
             }
-            for (copy, &i) in local.iter().zip(&self.order) {
+            let islands = self.island_of.iter();
+            for ((copy, &i), &island) in local.iter_mut().zip(&self.order).zip(islands) {
+                // A ball that can touch nothing in this step takes it in one go, as in the
+                // lesson, on its way back.
+                if island == NO_ISLAND {
+                    motion.integrator.step(copy, &whole);
+                }
                 let ball = &mut scene_balls[i];
                 (ball.x, ball.y, ball.vx, ball.vy) = (copy.x, copy.y, copy.vx, copy.vy);
                 if let Some(walls) = &effects.walls {
@@ -317,8 +317,9 @@ impl ContactSolver {
         }
     }
 
-    /// This step's contacts: ball pairs from the grid, in its order; then each ball's walls
-    /// and floors, in ball order; each only if it can touch within the step `dt`.
+    /// This step's contacts, each only if it can touch within the step `dt`: each ball's
+    /// walls and floors, as the balls are copied into the grid's order; then the ball pairs
+    /// from the grid, in its order.
     fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
         let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
         // How far gravity alone can move a ball in the step.
@@ -336,55 +337,12 @@ impl ContactSolver {
         self.grid.rebuild_with_margins(balls, margin);
         self.order.clear();
         self.order.extend(self.grid.order());
+        // Each ball's copy in the grid's order, and its walls and floors, in one pass.
         self.local.clear();
-        self.local
-            .extend(self.order.iter().map(|&i| Body::of(&balls[i])));
-        let (balls, order) = (&self.local, &self.order);
-
-        // The grid names each pair by the balls' places in its order, which are their places
-        // in `local`: `a < b`, close together in memory, no lookup needed.
-        self.pairs.clear();
-        let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
-        let places = &mut self.places;
-        places.clear();
-        self.grid.for_each_overlapping_place(|a, b| {
-            if places.len() < limit {
-                places.push((a, b));
-            }
-        });
-        for &(a, b) in places.iter() {
-            let (ball_a, ball_b) = (&balls[a], &balls[b]);
-            let reach = ball_a.radius + ball_b.radius;
-            // The scene's index of the later ball names the normal of balls at one spot.
-            let coincident = || {
-                let (nx, ny) = coincident_normal(order[a].max(order[b]));
-                [nx, ny]
-            };
-            let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
-            let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
-            // Both balls fall alike, but a ball pushed from above can close the gap by as
-            // much as gravity moves it.
-            if !can_touch(separation, approach, fall, PAIR_MARGIN * reach / 2.0) {
-                continue;
-            }
-            // The key names the pair by its scene indices, which do not change.
-            let (i, j) = (order[a].min(order[b]), order[a].max(order[b]));
-            let key = (j as u64) << 32 | i as u64;
-            let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
-            let mass = mass_a * mass_b / (mass_a + mass_b);
-            self.pairs.push(PairContact {
-                a,
-                b,
-                reach,
-                state: ContactState::new(normal, separation, self.restitution, mass, key),
-                inverse_a: 1.0 / mass_a,
-                inverse_b: 1.0 / mass_b,
-            });
-        }
-
         self.fixed.clear();
-        for (k, ball) in balls.iter().enumerate() {
-            let i = self.order[k];
+        for (k, &i) in self.order.iter().enumerate() {
+            let ball = &Body::of(&balls[i]);
+            self.local.push(*ball);
             let centre = [ball.x, ball.y];
             let mut touch = |id: u64, normal: [f64; 2], surface: f64, restitution: f64| {
                 let offset = surface + ball.radius;
@@ -427,6 +385,48 @@ impl ContactSolver {
                     floor.damping,
                 );
             }
+        }
+        let (balls, order) = (&self.local, &self.order);
+
+        // The grid names each pair by the balls' places in its order, which are their places
+        // in `local`: `a < b`, close together in memory, no lookup needed.
+        self.pairs.clear();
+        let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
+        let places = &mut self.places;
+        places.clear();
+        self.grid.for_each_overlapping_place(|a, b| {
+            if places.len() < limit {
+                places.push((a, b));
+            }
+        });
+        for &(a, b) in places.iter() {
+            let (ball_a, ball_b) = (&balls[a], &balls[b]);
+            let reach = ball_a.radius + ball_b.radius;
+            // The scene's index of the later ball names the normal of balls at one spot.
+            let coincident = || {
+                let (nx, ny) = coincident_normal(order[a].max(order[b]));
+                [nx, ny]
+            };
+            let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
+            let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
+            // Both balls fall alike, but a ball pushed from above can close the gap by as
+            // much as gravity moves it.
+            if !can_touch(separation, approach, fall, PAIR_MARGIN * reach / 2.0) {
+                continue;
+            }
+            // The key names the pair by its scene indices, which do not change.
+            let (i, j) = (order[a].min(order[b]), order[a].max(order[b]));
+            let key = (j as u64) << 32 | i as u64;
+            let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
+            let mass = mass_a * mass_b / (mass_a + mass_b);
+            self.pairs.push(PairContact {
+                a,
+                b,
+                reach,
+                state: ContactState::new(normal, separation, self.restitution, mass, key),
+                inverse_a: 1.0 / mass_a,
+                inverse_b: 1.0 / mass_b,
+            });
         }
     }
 
