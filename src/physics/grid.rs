@@ -15,21 +15,22 @@ use super::ball::Ball;
 /// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).
 const MAX_CELLS_PER_BALL: f64 = 4.0;
 
-/// A ball as the grid sees it: where it is, how big, and its place in the caller's slice.
-/// Copied out of the balls so the pair search reads one compact array in cell order.
+/// A ball as the grid sees it: where it is and how big. Copied out of the balls so the pair
+/// search reads one compact array in cell order.
 #[derive(Clone, Copy, Debug, Default)]
 struct Entry {
     x: f64,
     y: f64,
     radius: f64,
-    index: usize,
 }
 
 /// A uniform grid over the balls, rebuilt every frame into the same buffers.
 #[derive(Clone, Debug, Default)]
 pub struct Grid {
-    /// The balls sorted by cell (row by row), in the caller's order within a cell.
+    /// The balls sorted by cell (row by row), in the caller's order within a cell, and the
+    /// index in the caller's slice of each (kept apart: the pair search does not read it).
     entries: Vec<Entry>,
+    indices: Vec<usize>,
     /// The balls of cell `c` are `entries[cell_start[c]..cell_start[c + 1]]`.
     cell_start: Vec<usize>,
     /// Each ball's cell and entry (its radius grown by its margin), in the caller's order:
@@ -60,6 +61,7 @@ impl Grid {
     pub fn rebuild_with_margins(&mut self, balls: &[Ball], margin: impl Fn(&Ball) -> f64) {
         let Some(first) = balls.first() else {
             self.entries.clear();
+            self.indices.clear();
             self.cell_start.clear();
             self.columns = 0;
             self.rows = 0;
@@ -68,7 +70,7 @@ impl Grid {
         let (mut left, mut top, mut right, mut bottom) = (first.x, first.y, first.x, first.y);
         let mut largest_radius = 0.0_f64;
         self.unsorted.clear();
-        for (index, ball) in balls.iter().enumerate() {
+        for ball in balls {
             left = left.min(ball.x);
             top = top.min(ball.y);
             right = right.max(ball.x);
@@ -76,12 +78,7 @@ impl Grid {
             let radius = ball.radius + margin(ball);
             largest_radius = largest_radius.max(radius);
             let (x, y) = (ball.x, ball.y);
-            self.unsorted.push(Entry {
-                x,
-                y,
-                radius,
-                index,
-            });
+            self.unsorted.push(Entry { x, y, radius });
         }
         let (width, height) = (right - left, bottom - top);
 
@@ -119,10 +116,13 @@ impl Grid {
         // they keep the caller's order, and `cell_start[c]` ends up where cell `c` starts.
         self.entries.clear();
         self.entries.resize(balls.len(), Entry::default());
-        for (entry, &cell) in self.unsorted.iter().zip(&self.cell_of).rev() {
+        self.indices.resize(balls.len(), 0);
+        let unsorted = self.unsorted.iter().zip(&self.cell_of).enumerate();
+        for (index, (entry, &cell)) in unsorted.rev() {
             let slot = &mut self.cell_start[cell];
             *slot -= 1;
             self.entries[*slot] = *entry;
+            self.indices[*slot] = index;
         }
     }
 
@@ -145,7 +145,7 @@ impl Grid {
     /// each other (N²/2 pairs) cost time but no memory.
     pub fn for_each_overlapping_pair(&self, mut found: impl FnMut(usize, usize)) {
         self.for_each_overlapping_place(|k, l| {
-            let (i, j) = (self.entries[k].index, self.entries[l].index);
+            let (i, j) = (self.indices[k], self.indices[l]);
             found(i.min(j), i.max(j));
         });
     }
@@ -183,7 +183,7 @@ impl Grid {
     /// The balls' indices in cell order (row by row), as of the last `rebuild`: balls near
     /// each other in space are mostly near each other in this order.
     pub fn order(&self) -> impl Iterator<Item = usize> + '_ {
-        self.entries.iter().map(|entry| entry.index)
+        self.indices.iter().copied()
     }
 
     /// The entries of the cells from `first` to `last` column (inclusive) of `row`.
