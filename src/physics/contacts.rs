@@ -48,7 +48,7 @@ use super::ball::Ball;
 use super::effects::Effects;
 use super::exact::REST_SPEED;
 use super::grid::Grid;
-use super::integrator::Forces;
+use super::integrator::{Forces, Movable};
 use super::motion::Motion;
 use super::work::{tally, Work};
 
@@ -81,6 +81,35 @@ const TOUCHES_PER_CONTACT: usize = 4;
 /// Share of the overlap beyond the slop the position pass removes each sub-step (Box2D's
 /// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
 const PUSH: f64 = 0.2;
+
+/// A ball as the solver moves it: centre, velocity and radius, without the trail. Half the
+/// size of a [`Ball`], so the solver's copy of 100,000 balls is half the memory to sweep.
+#[derive(Clone, Copy, Debug)]
+struct Body {
+    x: f64,
+    y: f64,
+    vx: f64,
+    vy: f64,
+    radius: f64,
+}
+
+impl Body {
+    fn of(ball: &Ball) -> Body {
+        Body {
+            x: ball.x,
+            y: ball.y,
+            vx: ball.vx,
+            vy: ball.vy,
+            radius: ball.radius,
+        }
+    }
+}
+
+impl Movable for Body {
+    fn motion(&mut self) -> [&mut f64; 4] {
+        [&mut self.x, &mut self.y, &mut self.vx, &mut self.vy]
+    }
+}
 
 /// The sub-step the velocity pass works in.
 #[derive(Clone, Copy, Debug)]
@@ -139,16 +168,16 @@ pub struct ContactSolver {
     /// Ball-ball restitution (0 to 1; the scene checks it).
     restitution: f64,
     grid: Grid,
-    candidates: Vec<(usize, usize)>,
     pairs: Vec<PairContact>,
     fixed: Vec<FixedContact>,
     /// Last step's impulses by contact key, sorted by key: the warm start.
     remembered: Vec<(u64, f64)>,
-    /// The balls in the grid's order, without trails: what the solver moves.
-    local: Vec<Ball>,
-    /// `order[k]` is the scene's index of `local[k]`; `slot[i]` is where ball `i` is in `local`.
+    /// The balls in the grid's order: what the solver moves.
+    local: Vec<Body>,
+    /// `order[k]` is the scene's index of `local[k]`.
     order: Vec<usize>,
-    slot: Vec<usize>,
+    /// The pairs the grid finds, as places in its order.
+    places: Vec<(usize, usize)>,
     /// The balls (of `local`) with a contact this step, island by island.
     active: Vec<usize>,
     /// Where each island's balls are in `active` and its contacts in `pairs` and `fixed`.
@@ -157,6 +186,8 @@ pub struct ContactSolver {
     /// the contacts in the order found.
     parent: Vec<usize>,
     island_of: Vec<usize>,
+    /// The balls with a contact, in order.
+    with_contact: Vec<usize>,
     spare_pairs: Vec<PairContact>,
     spare_fixed: Vec<FixedContact>,
     /// Where an island's balls were, for when it cannot be solved touch by touch.
@@ -176,10 +207,12 @@ impl Island {
     fn ranges(&mut self) -> [&mut Range<usize>; 3] {
         [&mut self.balls, &mut self.pairs, &mut self.fixed]
     }
+}
 
-    fn starts(&self) -> [usize; 3] {
-        [self.balls.start, self.pairs.start, self.fixed.start]
-    }
+/// The next place in `range`, which grows by it.
+fn place(range: &mut Range<usize>) -> usize {
+    range.end += 1;
+    range.end - 1
 }
 
 /// `island_of` for a ball without contacts.
@@ -201,17 +234,17 @@ impl ContactSolver {
         ContactSolver {
             restitution,
             grid: Grid::new(),
-            candidates: Vec::new(),
             pairs: Vec::new(),
             fixed: Vec::new(),
             remembered: Vec::new(),
             local: Vec::new(),
             order: Vec::new(),
-            slot: Vec::new(),
+            places: Vec::new(),
             active: Vec::new(),
             islands: Vec::new(),
             parent: Vec::new(),
             island_of: Vec::new(),
+            with_contact: Vec::new(),
             spare_pairs: Vec::new(),
             spare_fixed: Vec::new(),
             saved: Vec::new(),
@@ -242,12 +275,6 @@ impl ContactSolver {
             // then touch balls close together in memory, which keeps 100,000 balls fast.
             let mut local = std::mem::take(&mut self.local);
             let balls = &mut local[..];
-            // A ball that can touch nothing in this step takes it in one go, as in the lesson.
-            for (ball, &island) in balls.iter_mut().zip(&self.island_of) {
-                if island == NO_ISLAND {
-                    motion.integrator.step(ball, &whole);
-                }
-            }
             // Islands share no ball, so each is solved on its own, all its sub-steps at once,
             // while its few balls and contacts are in the cache.
             for island in &self.islands {
@@ -272,7 +299,13 @@ impl ContactSolver {
                     solve_positions(pairs, fixed, balls);
                 }
             }
-            for (copy, &i) in local.iter().zip(&self.order) {
+            let islands = self.island_of.iter();
+            for ((copy, &i), &island) in local.iter_mut().zip(&self.order).zip(islands) {
+                // A ball that can touch nothing in this step takes it in one go, as in the
+                // lesson, on its way back.
+                if island == NO_ISLAND {
+                    motion.integrator.step(copy, &whole);
+                }
                 let ball = &mut scene_balls[i];
                 (ball.x, ball.y, ball.vx, ball.vy) = (copy.x, copy.y, copy.vx, copy.vy);
                 if let Some(walls) = &effects.walls {
@@ -284,8 +317,9 @@ impl ContactSolver {
         }
     }
 
-    /// This step's contacts: ball pairs from the grid, in its order; then each ball's walls
-    /// and floors, in ball order; each only if it can touch within the step `dt`.
+    /// This step's contacts, each only if it can touch within the step `dt`: each ball's
+    /// walls and floors, as the balls are copied into the grid's order; then the ball pairs
+    /// from the grid, in its order.
     fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
         let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
         // How far gravity alone can move a ball in the step.
@@ -301,57 +335,14 @@ impl ContactSolver {
             separation + approach.min(0.0) * dt - fall < slack
         };
         self.grid.rebuild_with_margins(balls, margin);
-        let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
-        self.grid.overlapping_pairs(&mut self.candidates, limit);
         self.order.clear();
         self.order.extend(self.grid.order());
-        self.slot.resize(balls.len(), 0);
-        for (k, &i) in self.order.iter().enumerate() {
-            self.slot[i] = k;
-        }
+        // Each ball's copy in the grid's order, and its walls and floors, in one pass.
         self.local.clear();
-        self.local.extend(self.order.iter().map(|&i| {
-            let ball = &balls[i];
-            Ball::new(ball.x, ball.y, ball.vx, ball.vy, ball.radius, 0)
-        }));
-        let balls = &self.local;
-
-        self.pairs.clear();
-        for &(i, j) in &self.candidates {
-            // `i < j` in the scene; the key names the pair by them, which do not change.
-            let key = (j as u64) << 32 | i as u64;
-            let (a, b) = (
-                self.slot[i].min(self.slot[j]),
-                self.slot[i].max(self.slot[j]),
-            );
-            let (ball_a, ball_b) = (&balls[a], &balls[b]);
-            let reach = ball_a.radius + ball_b.radius;
-            let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
-            let mass = mass_a * mass_b / (mass_a + mass_b);
-            let coincident = || {
-                let (nx, ny) = coincident_normal(j);
-                [nx, ny]
-            };
-            let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
-            let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
-            // Both balls fall alike, but a ball pushed from above can close the gap by as
-            // much as gravity moves it.
-            if !can_touch(separation, approach, fall, PAIR_MARGIN * reach / 2.0) {
-                continue;
-            }
-            self.pairs.push(PairContact {
-                a,
-                b,
-                reach,
-                state: ContactState::new(normal, separation, self.restitution, mass, key),
-                inverse_a: 1.0 / mass_a,
-                inverse_b: 1.0 / mass_b,
-            });
-        }
-
         self.fixed.clear();
-        for (k, ball) in balls.iter().enumerate() {
-            let i = self.order[k];
+        for (k, &i) in self.order.iter().enumerate() {
+            let ball = &Body::of(&balls[i]);
+            self.local.push(*ball);
             let centre = [ball.x, ball.y];
             let mut touch = |id: u64, normal: [f64; 2], surface: f64, restitution: f64| {
                 let offset = surface + ball.radius;
@@ -395,6 +386,48 @@ impl ContactSolver {
                 );
             }
         }
+        let (balls, order) = (&self.local, &self.order);
+
+        // The grid names each pair by the balls' places in its order, which are their places
+        // in `local`: `a < b`, close together in memory, no lookup needed.
+        self.pairs.clear();
+        let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
+        let places = &mut self.places;
+        places.clear();
+        self.grid.for_each_overlapping_place(|a, b| {
+            if places.len() < limit {
+                places.push((a, b));
+            }
+        });
+        for &(a, b) in places.iter() {
+            let (ball_a, ball_b) = (&balls[a], &balls[b]);
+            let reach = ball_a.radius + ball_b.radius;
+            // The scene's index of the later ball names the normal of balls at one spot.
+            let coincident = || {
+                let (nx, ny) = coincident_normal(order[a].max(order[b]));
+                [nx, ny]
+            };
+            let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
+            let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
+            // Both balls fall alike, but a ball pushed from above can close the gap by as
+            // much as gravity moves it.
+            if !can_touch(separation, approach, fall, PAIR_MARGIN * reach / 2.0) {
+                continue;
+            }
+            // The key names the pair by its scene indices, which do not change.
+            let (i, j) = (order[a].min(order[b]), order[a].max(order[b]));
+            let key = (j as u64) << 32 | i as u64;
+            let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
+            let mass = mass_a * mass_b / (mass_a + mass_b);
+            self.pairs.push(PairContact {
+                a,
+                b,
+                reach,
+                state: ContactState::new(normal, separation, self.restitution, mass, key),
+                inverse_a: 1.0 / mass_a,
+                inverse_b: 1.0 / mass_b,
+            });
+        }
     }
 
     /// Groups the balls with a contact this step into islands — balls joined by pair
@@ -419,6 +452,7 @@ impl ContactSolver {
             island_of[ball] = 0;
         }
         self.islands.clear();
+        self.with_contact.clear();
         for ball in 0..count {
             if island_of[ball] != NO_ISLAND {
                 let first = root(parent, ball);
@@ -429,6 +463,7 @@ impl ContactSolver {
                     island_of[ball] = island_of[first]; // `first < ball`: numbered already
                 }
                 self.islands[island_of[ball]].balls.end += 1;
+                self.with_contact.push(ball);
             }
         }
         for contact in &self.pairs {
@@ -437,34 +472,28 @@ impl ContactSolver {
         for contact in &self.fixed {
             self.islands[island_of[contact.ball]].fixed.end += 1;
         }
-        // Turn the counts into ranges, one island after another.
-        let mut ends = [0; 3];
+        // Turn the counts into empty ranges where each island's balls and contacts will be,
+        // one island after another; placing one extends its island's range (a counting sort).
+        let mut starts = [0; 3];
         for island in &mut self.islands {
-            for (range, end) in island.ranges().into_iter().zip(&mut ends) {
-                *range = *end..*end + range.end;
-                *end = range.end;
+            for (range, start) in island.ranges().into_iter().zip(&mut starts) {
+                let count = range.end;
+                *range = *start..*start;
+                *start += count;
             }
         }
-        // Place each ball and contact at its island's next free place (a counting sort).
-        let mut next: Vec<[usize; 3]> = self.islands.iter().map(|i| i.starts()).collect();
-        let mut place = |island: usize, kind: usize| {
-            let place = next[island][kind];
-            next[island][kind] += 1;
-            place
-        };
-        self.active.resize(ends[0], 0);
-        for (ball, &island) in island_of.iter().enumerate() {
-            if island != NO_ISLAND {
-                self.active[place(island, 0)] = ball;
-            }
+        let islands = &mut self.islands;
+        self.active.resize(self.with_contact.len(), 0);
+        for &ball in &self.with_contact {
+            self.active[place(&mut islands[island_of[ball]].balls)] = ball;
         }
         self.spare_pairs.clone_from(&self.pairs);
         for contact in &self.spare_pairs {
-            self.pairs[place(island_of[contact.a], 1)] = *contact;
+            self.pairs[place(&mut islands[island_of[contact.a]].pairs)] = *contact;
         }
         self.spare_fixed.clone_from(&self.fixed);
         for contact in &self.spare_fixed {
-            self.fixed[place(island_of[contact.ball], 2)] = *contact;
+            self.fixed[place(&mut islands[island_of[contact.ball]].fixed)] = *contact;
         }
     }
 
@@ -494,7 +523,7 @@ impl ContactSolver {
 }
 
 /// Applies each contact's impulse of the last sub-step again, and measures its gap anew.
-fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut [Ball]) {
+fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut [Body]) {
     for contact in pairs.iter_mut() {
         let (a, b) = two(balls, contact.a, contact.b);
         let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
@@ -519,7 +548,7 @@ fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut
 /// colliding): those take the sub-steps. `saved` is scratch space.
 fn solve_free_island(
     island: (&[usize], &mut [PairContact], &mut [FixedContact]),
-    balls: &mut [Ball],
+    balls: &mut [Body],
     (motion, whole, sub): (&Motion, &Forces, SubStep),
     saved: &mut Vec<[f64; 4]>,
 ) -> bool {
@@ -529,7 +558,7 @@ fn solve_free_island(
         let ball = &balls[i];
         [ball.x, ball.y, ball.vx, ball.vy]
     }));
-    let fly = |balls: &mut [Ball], time: f64| {
+    let fly = |balls: &mut [Body], time: f64| {
         for &i in active {
             motion.integrator.fly(&mut balls[i], whole, time);
         }
@@ -573,7 +602,7 @@ fn solve_free_island(
 fn first_touch(
     pairs: &[PairContact],
     fixed: &[FixedContact],
-    balls: &[Ball],
+    balls: &[Body],
 ) -> Option<(usize, f64)> {
     let touches = pairs.iter().map(|contact| contact.touch_time(balls));
     let touches = touches.chain(
@@ -595,7 +624,7 @@ fn first_touch(
 fn solve_velocities(
     pairs: &mut [PairContact],
     fixed: &mut [FixedContact],
-    balls: &mut [Ball],
+    balls: &mut [Body],
     sub: SubStep,
 ) {
     for contact in pairs.iter_mut() {
@@ -608,7 +637,7 @@ fn solve_velocities(
 }
 
 /// One Gauss–Seidel pass that pushes overlapping contacts partly apart, positions only.
-fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [Ball]) {
+fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [Body]) {
     for contact in pairs {
         let (a, b) = two(balls, contact.a, contact.b);
         let allowed = SLOP * contact.reach / 2.0;
@@ -683,7 +712,7 @@ impl ContactState {
 
 impl PairContact {
     /// The velocity pass for this contact.
-    fn solve_velocity(&mut self, a: &mut Ball, b: &mut Ball, sub: SubStep) {
+    fn solve_velocity(&mut self, a: &mut Body, b: &mut Body, sub: SubStep) {
         let [nx, ny] = self.state.normal;
         let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
         let change = self.state.solve(speed, sub);
@@ -692,7 +721,7 @@ impl PairContact {
 
     /// When the balls, flying straight, first touch (infinite if never, 0 if they touch
     /// now); `None` if they overlap by more than the slop, which the position pass handles.
-    fn touch_time(&self, balls: &[Ball]) -> Option<f64> {
+    fn touch_time(&self, balls: &[Body]) -> Option<f64> {
         let (a, b) = (&balls[self.a], &balls[self.b]);
         let p = [b.x - a.x, b.y - a.y];
         let v = [b.vx - a.vx, b.vy - a.vy];
@@ -717,7 +746,7 @@ impl PairContact {
     }
 
     /// Gives `b` the impulse `impulse` along the normal and `a` the opposite one.
-    fn push_velocities(&self, a: &mut Ball, b: &mut Ball, impulse: f64) {
+    fn push_velocities(&self, a: &mut Body, b: &mut Body, impulse: f64) {
         let [nx, ny] = self.state.normal;
         let (da, db) = (impulse * self.inverse_a, impulse * self.inverse_b);
         a.vx -= da * nx;
@@ -729,7 +758,7 @@ impl PairContact {
 
 impl FixedContact {
     /// The velocity pass for this contact.
-    fn solve_velocity(&mut self, ball: &mut Ball, sub: SubStep) {
+    fn solve_velocity(&mut self, ball: &mut Body, sub: SubStep) {
         let [nx, ny] = self.state.normal;
         let change = self.state.solve(ball.vx * nx + ball.vy * ny, sub) / self.state.mass;
         ball.vx += change * nx;
@@ -738,7 +767,7 @@ impl FixedContact {
 
     /// When the ball, flying straight, reaches the line (infinite if never, 0 if it touches
     /// now); `None` if it is past the line by more than the slop.
-    fn touch_time(&self, ball: &Ball) -> Option<f64> {
+    fn touch_time(&self, ball: &Body) -> Option<f64> {
         let separation = self.gap(ball);
         let approach = dot([ball.vx, ball.vy], self.state.normal);
         match separation {
@@ -749,13 +778,13 @@ impl FixedContact {
     }
 
     /// The gap between the ball and the line, px.
-    fn gap(&self, ball: &Ball) -> f64 {
+    fn gap(&self, ball: &Body) -> f64 {
         dot([ball.x, ball.y], self.state.normal) - self.offset
     }
 }
 
 /// Mass of a ball: radius² (flat discs of equal density).
-fn mass(ball: &Ball) -> f64 {
+fn mass(ball: &Body) -> f64 {
     ball.radius * ball.radius
 }
 
@@ -766,8 +795,8 @@ fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
 /// The gap between two balls whose radii add up to `reach`, and the normal from `a` to `b`
 /// (`fallback()` if their centres coincide).
 fn pair_gap(
-    a: &Ball,
-    b: &Ball,
+    a: &Body,
+    b: &Body,
     reach: f64,
     fallback: impl FnOnce() -> [f64; 2],
 ) -> (f64, [f64; 2]) {
@@ -781,7 +810,7 @@ fn pair_gap(
 }
 
 /// Balls `a` and `b` (`a < b`), both mutable.
-fn two(balls: &mut [Ball], a: usize, b: usize) -> (&mut Ball, &mut Ball) {
+fn two(balls: &mut [Body], a: usize, b: usize) -> (&mut Body, &mut Body) {
     let (head, tail) = balls.split_at_mut(b);
     (&mut head[a], &mut tail[0])
 }

@@ -15,27 +15,29 @@ use super::ball::Ball;
 /// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).
 const MAX_CELLS_PER_BALL: f64 = 4.0;
 
-/// A ball as the grid sees it: where it is, how big, and its place in the caller's slice.
-/// Copied out of the balls so the pair search reads one compact array in cell order.
+/// A ball as the grid sees it: where it is and how big. Copied out of the balls so the pair
+/// search reads one compact array in cell order.
 #[derive(Clone, Copy, Debug, Default)]
 struct Entry {
     x: f64,
     y: f64,
     radius: f64,
-    index: usize,
 }
 
 /// A uniform grid over the balls, rebuilt every frame into the same buffers.
 #[derive(Clone, Debug, Default)]
 pub struct Grid {
-    /// The balls sorted by cell (row by row), in the caller's order within a cell.
+    /// The balls sorted by cell (row by row), in the caller's order within a cell, and the
+    /// index in the caller's slice of each (kept apart: the pair search does not read it).
     entries: Vec<Entry>,
+    indices: Vec<usize>,
     /// The balls of cell `c` are `entries[cell_start[c]..cell_start[c + 1]]`.
     cell_start: Vec<usize>,
-    /// Each ball's cell and its radius grown by its margin, in the caller's order: the
-    /// counting sort's scratch space (a margin is worked out once per ball).
+    /// Each ball's cell and entry (its radius grown by its margin), in the caller's order:
+    /// the counting sort's scratch space. The balls are read once, into these compact
+    /// entries; the sort reads them instead of the balls.
     cell_of: Vec<usize>,
-    grown: Vec<f64>,
+    unsorted: Vec<Entry>,
     columns: usize,
     rows: usize,
 }
@@ -59,6 +61,7 @@ impl Grid {
     pub fn rebuild_with_margins(&mut self, balls: &[Ball], margin: impl Fn(&Ball) -> f64) {
         let Some(first) = balls.first() else {
             self.entries.clear();
+            self.indices.clear();
             self.cell_start.clear();
             self.columns = 0;
             self.rows = 0;
@@ -66,15 +69,16 @@ impl Grid {
         };
         let (mut left, mut top, mut right, mut bottom) = (first.x, first.y, first.x, first.y);
         let mut largest_radius = 0.0_f64;
-        self.grown.clear();
+        self.unsorted.clear();
         for ball in balls {
             left = left.min(ball.x);
             top = top.min(ball.y);
             right = right.max(ball.x);
             bottom = bottom.max(ball.y);
-            let grown = ball.radius + margin(ball);
-            largest_radius = largest_radius.max(grown);
-            self.grown.push(grown);
+            let radius = ball.radius + margin(ball);
+            largest_radius = largest_radius.max(radius);
+            let (x, y) = (ball.x, ball.y);
+            self.unsorted.push(Entry { x, y, radius });
         }
         let (width, height) = (right - left, bottom - top);
 
@@ -91,19 +95,17 @@ impl Grid {
         let last_column = self.columns - 1;
         let last_row = self.rows - 1;
 
-        self.cell_of.clear();
-        self.cell_of.extend(balls.iter().map(|ball| {
-            let column = (((ball.x - left) / cell) as usize).min(last_column);
-            let row = (((ball.y - top) / cell) as usize).min(last_row);
-            row * self.columns + column
-        }));
-
         // Counting sort. First count the balls in each cell, then turn the counts into a
         // running total, so `cell_start[c]` holds where cell `c` ends.
         self.cell_start.clear();
         self.cell_start.resize(self.columns * self.rows + 1, 0);
-        for &cell in &self.cell_of {
+        self.cell_of.clear();
+        for entry in &self.unsorted {
+            let column = (((entry.x - left) / cell) as usize).min(last_column);
+            let row = (((entry.y - top) / cell) as usize).min(last_row);
+            let cell = row * self.columns + column;
             self.cell_start[cell] += 1;
+            self.cell_of.push(cell);
         }
         let mut total = 0;
         for end in &mut self.cell_start {
@@ -114,15 +116,13 @@ impl Grid {
         // they keep the caller's order, and `cell_start[c]` ends up where cell `c` starts.
         self.entries.clear();
         self.entries.resize(balls.len(), Entry::default());
-        for (index, ball) in balls.iter().enumerate().rev() {
-            let slot = &mut self.cell_start[self.cell_of[index]];
+        self.indices.resize(balls.len(), 0);
+        let unsorted = self.unsorted.iter().zip(&self.cell_of).enumerate();
+        for (index, (entry, &cell)) in unsorted.rev() {
+            let slot = &mut self.cell_start[cell];
             *slot -= 1;
-            self.entries[*slot] = Entry {
-                x: ball.x,
-                y: ball.y,
-                radius: self.grown[index],
-                index,
-            };
+            self.entries[*slot] = *entry;
+            self.indices[*slot] = index;
         }
     }
 
@@ -144,6 +144,16 @@ impl Grid {
     /// row. Pairs are handed over as found rather than collected, so balls piled on top of
     /// each other (N²/2 pairs) cost time but no memory.
     pub fn for_each_overlapping_pair(&self, mut found: impl FnMut(usize, usize)) {
+        self.for_each_overlapping_place(|k, l| {
+            let (i, j) = (self.indices[k], self.indices[l]);
+            found(i.min(j), i.max(j));
+        });
+    }
+
+    /// The same pairs in the same order, each ball named by its place in [`Grid::order`]
+    /// (`k < l`) rather than by its index: a caller that keeps its balls in that order finds
+    /// both balls of a pair near each other, without looking them up.
+    pub fn for_each_overlapping_place(&self, mut found: impl FnMut(usize, usize)) {
         for row in 0..self.rows {
             for column in 0..self.columns {
                 let here = self.cells(row, column, column);
@@ -152,7 +162,8 @@ impl Grid {
                 }
                 // Each pair of cells is searched once, from the upper or left one: this cell
                 // with the one to its right, and with the three below. Cells next to each other
-                // in a row are next to each other in `entries`, so each is one range.
+                // in a row are next to each other in `entries`, so each is one range, and every
+                // place in it comes after `a`.
                 let right = self.cells(row, column, (column + 1).min(self.columns - 1));
                 let below = if row + 1 < self.rows {
                     let first = column.saturating_sub(1);
@@ -172,7 +183,7 @@ impl Grid {
     /// The balls' indices in cell order (row by row), as of the last `rebuild`: balls near
     /// each other in space are mostly near each other in this order.
     pub fn order(&self) -> impl Iterator<Item = usize> + '_ {
-        self.entries.iter().map(|entry| entry.index)
+        self.indices.iter().copied()
     }
 
     /// The entries of the cells from `first` to `last` column (inclusive) of `row`.
@@ -181,14 +192,15 @@ impl Grid {
         self.cell_start[start + first]..self.cell_start[start + last + 1]
     }
 
-    /// Hands `found` the pairs that entry `a` makes with the overlapping entries in `others`.
+    /// Hands `found` the places of entry `a` and of each entry in `others` that overlaps it.
     fn overlaps(&self, a: usize, others: Range<usize>, found: &mut impl FnMut(usize, usize)) {
-        let a = self.entries[a];
-        for b in &self.entries[others] {
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let reach = a.radius + b.radius;
+        let entry = self.entries[a];
+        let first = others.start;
+        for (offset, other) in self.entries[others].iter().enumerate() {
+            let (dx, dy) = (other.x - entry.x, other.y - entry.y);
+            let reach = entry.radius + other.radius;
             if dx * dx + dy * dy < reach * reach {
-                found(a.index.min(b.index), a.index.max(b.index));
+                found(a, first + offset);
             }
         }
     }

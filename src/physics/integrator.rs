@@ -15,6 +15,19 @@ use super::effects::Effects;
 use super::poly::Poly;
 use super::work::{tally, Work};
 
+/// What the integrators move: a centre and a velocity. A [`Ball`] is one; the contact solver
+/// moves a compact copy of its balls, without their trails (`super::contacts::Body`).
+pub trait Movable {
+    /// Centre and velocity, `[x, y, vx, vy]` in px and px/frame, to change in place.
+    fn motion(&mut self) -> [&mut f64; 4];
+}
+
+impl Movable for Ball {
+    fn motion(&mut self) -> [&mut f64; 4] {
+        [&mut self.x, &mut self.y, &mut self.vx, &mut self.vy]
+    }
+}
+
 /// Which integration method advances the balls.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -108,46 +121,47 @@ impl Forces {
 
 impl Integrator {
     /// Advances `ball` by one step of `forces.dt` frames under gravity and drag (no collisions).
-    pub fn step(self, ball: &mut Ball, forces: &Forces) {
+    pub fn step(self, ball: &mut impl Movable, forces: &Forces) {
         self.kick_before(ball, forces);
         self.fly(ball, forces, forces.dt);
         self.kick_after(ball, forces);
     }
 
     /// The velocity change at the start of a step (semi-implicit Euler's whole `v += a·dt`).
-    pub fn kick_before(self, ball: &mut Ball, forces: &Forces) {
+    pub fn kick_before(self, ball: &mut impl Movable, forces: &Forces) {
         if self == Integrator::SemiImplicitEuler {
             kick(ball, forces);
         }
     }
 
     /// The velocity change at the end of a step (explicit Euler's whole `v += a·dt`).
-    pub fn kick_after(self, ball: &mut Ball, forces: &Forces) {
+    pub fn kick_after(self, ball: &mut impl Movable, forces: &Forces) {
         if self == Integrator::ExplicitEuler {
             kick(ball, forces);
         }
     }
 
     /// Moves `ball` along the step's flight for `time` frames (`time ≤ forces.dt`).
-    pub fn fly(self, ball: &mut Ball, forces: &Forces, time: f64) {
+    pub fn fly(self, ball: &mut impl Movable, forces: &Forces, time: f64) {
+        let [x, y, vx, vy] = ball.motion();
         match self {
             Integrator::ExplicitEuler | Integrator::SemiImplicitEuler => {
-                ball.x += ball.vx * time;
-                ball.y += ball.vy * time;
+                *x += *vx * time;
+                *y += *vy * time;
             }
             Integrator::VelocityVerlet | Integrator::Rk4 if forces.stops_dead() => {
-                ball.vx = 0.0;
-                ball.vy = 0.0;
+                *vx = 0.0;
+                *vy = 0.0;
             }
             Integrator::VelocityVerlet => {
                 forces.tally();
-                (ball.x, ball.vx) = verlet(ball.x, ball.vx, time, 0, forces);
-                (ball.y, ball.vy) = verlet(ball.y, ball.vy, time, 1, forces);
+                (*x, *vx) = verlet(*x, *vx, time, 0, forces);
+                (*y, *vy) = verlet(*y, *vy, time, 1, forces);
             }
             Integrator::Rk4 => {
                 forces.tally();
-                (ball.x, ball.vx) = rk4(ball.x, ball.vx, time, 0, forces);
-                (ball.y, ball.vy) = rk4(ball.y, ball.vy, time, 1, forces);
+                (*x, *vx) = rk4(*x, *vx, time, 0, forces);
+                (*y, *vy) = rk4(*y, *vy, time, 1, forces);
             }
         }
     }
@@ -201,15 +215,16 @@ impl Integrator {
 
 /// Euler's velocity change: all of a step's gravity, then all of its drag. With dt = 1 this
 /// is exactly the lesson's arithmetic.
-fn kick(ball: &mut Ball, forces: &Forces) {
+fn kick(ball: &mut impl Movable, forces: &Forces) {
     forces.tally();
+    let [_, _, vx, vy] = ball.motion();
     if let Some([gx, gy]) = forces.gravity {
-        ball.vx += gx * forces.dt;
-        ball.vy += gy * forces.dt;
+        *vx += gx * forces.dt;
+        *vy += gy * forces.dt;
     }
     if let Some(drag) = forces.drag {
-        ball.vx *= drag.keep;
-        ball.vy *= drag.keep;
+        *vx *= drag.keep;
+        *vy *= drag.keep;
     }
 }
 
