@@ -21,6 +21,10 @@ use super::poly::Poly;
 /// after a bounce leaves about 1e-16 px/frame, a real approach is many orders more.
 pub const TOUCH_SPEED: f64 = 1e-9;
 
+/// How far (as a share of the squared reach) a touching pair on curved flights may close
+/// before it counts as meeting again: well above rounding, far below a visible overlap.
+const REBOUND_GAP: f64 = 1e-9;
+
 /// The first time in `[0, end]` at which two centres whose offset (second minus first) moves
 /// as `relative` come within `reach` of each other while approaching, if they do.
 pub fn first_touch(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
@@ -60,10 +64,20 @@ fn curved(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
     let gap = x.mul(x).plus_poly(&y.mul(y)).plus(-reach * reach);
     // d/dτ of the squared distance is 2·Δ·Δ'; approaching means it is negative.
     let approaching = |time: f64| gap.slope(time) < -2.0 * TOUCH_SPEED * reach;
-    if gap.at(0.0) <= 0.0 {
-        return approaching(0.0).then_some(0.0);
+    let start = gap.at(0.0);
+    if start > 0.0 {
+        return gap.first_negative(end).filter(|&time| approaching(time));
     }
-    gap.first_negative(end).filter(|&time| approaching(time))
+    if approaching(0.0) {
+        return Some(0.0);
+    }
+    // Touching (a hair inside, from rounding) and parting or at rest: unlike a straight
+    // flight, a curved one can bring them together again, so look for the gap falling a hair
+    // below where it is now.
+    let slack = REBOUND_GAP * reach * reach - start;
+    gap.plus(slack)
+        .first_negative(end)
+        .filter(|&time| approaching(time))
 }
 
 #[cfg(test)]

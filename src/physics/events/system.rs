@@ -559,12 +559,18 @@ impl EventDriven {
             } else {
                 None
             };
-            if let Some((holder, ball, n)) = resting {
+            if let Some((holder, resting, n)) = resting {
                 let (vx, vy) = (balls[holder].vx, balls[holder].vy);
-                let ball = &mut balls[ball];
+                let ball = &mut balls[resting];
                 let into = dot([ball.vx - vx, ball.vy - vy], n);
                 ball.vx -= into * n[0];
                 ball.vy -= into * n[1];
+                // From now on gravity no longer presses it into the held ball, as on a wall:
+                // on a curved flight (Verlet's, RK4's) it would press in again at once.
+                if !self.asleep[resting] {
+                    self.support[resting].push(n);
+                    self.flight[resting] = self.support[resting].hold(forces);
+                }
                 self.held[i] = true;
                 self.held[j] = true;
                 return;
