@@ -11,13 +11,12 @@
 //! Run: `cargo run --release --example exact_piles` (about 30 s).
 
 use bouncing_ball::physics::accuracy::deepest_overlap;
-use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Simulation;
-use bouncing_ball::scene::random::Random;
+use bouncing_ball::scene::random::jittered_lattice;
 
 const BALLS: usize = 150;
 const RADIUS: f64 = 6.0;
@@ -26,23 +25,6 @@ const FRAMES: u32 = 400;
 /// Frames from which the pile should be at rest.
 const SETTLED_FROM: u32 = 300;
 const SEEDS: u64 = 12;
-
-/// The balls on a lattice two px apart, each jittered by up to 1 px and given a random
-/// velocity of up to 2 px/frame along each axis.
-fn lattice(seed: u64) -> Vec<Ball> {
-    let mut random = Random::new(seed);
-    let spacing = 2.0 * RADIUS + 2.0;
-    let per_row = ((WIDTH - 2.0 * RADIUS) / spacing) as usize;
-    (0..BALLS)
-        .map(|k| {
-            let (column, row) = ((k % per_row) as f64, (k / per_row) as f64);
-            let x = RADIUS + 1.0 + column * spacing + random.range(0.0, 1.0);
-            let y = RADIUS + 1.0 + row * spacing + random.range(0.0, 1.0);
-            let (vx, vy) = (random.range(-2.0, 2.0), random.range(-2.0, 2.0));
-            Ball::new(x, y, vx, vy, RADIUS, 0)
-        })
-        .collect()
-}
 
 /// Runs one pile: (largest rms speed once settled, deepest overlap / r, most events in a
 /// frame, capped frames).
@@ -61,7 +43,8 @@ fn pile(seed: u64, integrator: Integrator) -> (f64, f64, u64, u64) {
         collisions: CollisionMode::Exact,
         ..Motion::default()
     };
-    let mut simulation = Simulation::new(lattice(seed), effects, motion, Some(0.5));
+    let balls = jittered_lattice(BALLS, RADIUS, WIDTH, 2.0, seed);
+    let mut simulation = Simulation::new(balls, effects, motion, Some(0.5));
     let (mut settled_speed, mut deepest, mut most, mut capped) = (0.0f64, 0.0f64, 0, 0);
     for frame in 0..FRAMES {
         simulation.step();

@@ -11,7 +11,7 @@ use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Simulation;
 use bouncing_ball::scene::file as scene_file;
-use bouncing_ball::scene::random::Random;
+use bouncing_ball::scene::random::jittered_lattice;
 
 fn exact(integrator: Integrator) -> Motion {
     Motion {
@@ -231,26 +231,6 @@ fn an_elastic_ball_on_a_flat_floor_or_in_a_valley_keeps_its_energy_exactly() {
     }
 }
 
-/// `count` balls of `radius` on a jittered lattice in the upper part of the box, moving at
-/// up to `speed` px/frame each way.
-fn lattice(count: usize, radius: f64, width: f64, speed: f64, seed: u64) -> Vec<Ball> {
-    let mut random = Random::new(seed);
-    let spacing = 2.0 * radius + 2.0;
-    let per_row = ((width - 2.0 * radius) / spacing) as usize;
-    (0..count)
-        .map(|k| {
-            let (column, row) = ((k % per_row) as f64, (k / per_row) as f64);
-            ball(
-                radius + 1.0 + column * spacing + random.range(0.0, 1.0),
-                radius + 1.0 + row * spacing + random.range(0.0, 1.0),
-                random.range(-speed, speed),
-                random.range(-speed, speed),
-                radius,
-            )
-        })
-        .collect()
-}
-
 /// Root-mean-square speed of the balls, px/frame.
 fn rms_speed(balls: &[Ball]) -> f64 {
     let sum: f64 = balls.iter().map(|b| b.vx * b.vx + b.vy * b.vy).sum();
@@ -268,7 +248,7 @@ fn the_150_ball_pile_comes_to_rest_without_overlap_and_every_frame_finishes() {
         }),
         ..Effects::default()
     };
-    let balls = lattice(150, 6.0, 320.0, 2.0, 7);
+    let balls = jittered_lattice(150, 6.0, 320.0, 2.0, 7);
     let mut simulation = Simulation::new(
         balls,
         effects,

@@ -120,11 +120,7 @@ impl Cells {
     }
 
     /// Calls `visit` with every ball in the cells of the given column and row ranges.
-    fn visit_cells(
-        &self,
-        [columns, rows]: [Range<usize>; 2],
-        mut visit: impl FnMut(usize),
-    ) {
+    fn visit_cells(&self, [columns, rows]: [Range<usize>; 2], mut visit: impl FnMut(usize)) {
         for r in rows {
             for c in columns.clone() {
                 for j in self.balls.balls(r * self.columns + c) {
