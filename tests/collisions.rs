@@ -295,7 +295,7 @@ fn balls_flung_far_away_or_to_infinity_do_not_break_the_grid() {
     let mut grid = Grid::new();
     grid.rebuild(&balls);
     let mut found = Vec::new();
-    grid.overlapping_pairs(&mut found, usize::MAX);
+    grid.for_each_overlapping_pair(|i, j| found.push((i, j)));
     assert_eq!(vec![(0, 1)], found);
 }
 
@@ -311,7 +311,7 @@ proptest! {
         let mut grid = Grid::new();
         grid.rebuild(&balls);
         let mut found = Vec::new();
-        grid.overlapping_pairs(&mut found, usize::MAX);
+        grid.for_each_overlapping_pair(|i, j| found.push((i, j)));
         found.sort_unstable();
         let expected = brute_force_pairs(&balls);
         prop_assert_eq!(&expected, &found, "{} balls spread over {} px", balls.len(), spread);

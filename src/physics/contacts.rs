@@ -392,14 +392,8 @@ impl ContactSolver {
         // in `local`: `a < b`, close together in memory, no lookup needed.
         self.pairs.clear();
         let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
-        let places = &mut self.places;
-        places.clear();
-        self.grid.for_each_overlapping_place(|a, b| {
-            if places.len() < limit {
-                places.push((a, b));
-            }
-        });
-        for &(a, b) in places.iter() {
+        self.grid.overlapping_places(&mut self.places, limit);
+        for &(a, b) in &self.places {
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
             let reach = ball_a.radius + ball_b.radius;
             // The scene's index of the later ball names the normal of balls at one spot.

@@ -56,7 +56,7 @@ impl Grid {
     }
 
     /// Like `rebuild`, with each ball grown by `margin(ball)` px, so that
-    /// [`Grid::overlapping_pairs`] also reports pairs that are that close (the contact solver
+    /// [`Grid::for_each_overlapping_pair`] also reports pairs that are that close (the contact solver
     /// looks at pairs that can touch within a step).
     pub fn rebuild_with_margins(&mut self, balls: &[Ball], margin: impl Fn(&Ball) -> f64) {
         let Some(first) = balls.first() else {
@@ -126,14 +126,14 @@ impl Grid {
         }
     }
 
-    /// Replaces the contents of `pairs` with the pairs of balls that overlap, in the order
-    /// of [`Grid::for_each_overlapping_pair`], at most `limit` of them: balls piled on one
-    /// spot make N² pairs, and memory must not follow.
-    pub fn overlapping_pairs(&self, pairs: &mut Vec<(usize, usize)>, limit: usize) {
-        pairs.clear();
-        self.for_each_overlapping_pair(|i, j| {
-            if pairs.len() < limit {
-                pairs.push((i, j));
+    /// Replaces the contents of `places` with the pairs of balls that overlap, named as in
+    /// [`Grid::for_each_overlapping_place`], at most `limit` of them: balls piled on one spot
+    /// make N² pairs, and memory must not follow.
+    pub fn overlapping_places(&self, places: &mut Vec<(usize, usize)>, limit: usize) {
+        places.clear();
+        self.for_each_overlapping_place(|k, l| {
+            if places.len() < limit {
+                places.push((k, l));
             }
         });
     }
