@@ -10,7 +10,7 @@
 //!
 //! Run: `cargo run --release --example exact_piles` (about 30 s).
 
-use bouncing_ball::physics::accuracy::deepest_overlap;
+use bouncing_ball::physics::accuracy::{deepest_overlap, rms_speed};
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
@@ -55,8 +55,7 @@ fn pile(seed: u64, integrator: Integrator) -> (f64, f64, u64, u64) {
         }
         deepest = deepest.max(deepest_overlap(balls) / RADIUS);
         if frame >= SETTLED_FROM {
-            let squares: f64 = balls.iter().map(|b| b.vx * b.vx + b.vy * b.vy).sum();
-            settled_speed = settled_speed.max((squares / BALLS as f64).sqrt());
+            settled_speed = settled_speed.max(rms_speed(balls));
         }
     }
     (settled_speed, deepest, most, capped)

@@ -1,7 +1,9 @@
 //! Exact mode for every contact: balls meet at the moment they touch (event-driven), floors
 //! are met at the moment of impact, nothing is clamped afterwards.
 
-use bouncing_ball::physics::accuracy::{deepest_overlap, kinetic_energy, lesson_effects};
+use bouncing_ball::physics::accuracy::{
+    deepest_overlap, kinetic_energy, lesson_effects, rms_speed,
+};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::events::system::MAX_EVENTS_PER_BALL;
@@ -229,12 +231,6 @@ fn an_elastic_ball_on_a_flat_floor_or_in_a_valley_keeps_its_energy_exactly() {
             );
         }
     }
-}
-
-/// Root-mean-square speed of the balls, px/frame.
-fn rms_speed(balls: &[Ball]) -> f64 {
-    let sum: f64 = balls.iter().map(|b| b.vx * b.vx + b.vy * b.vy).sum();
-    (sum / balls.len() as f64).sqrt()
 }
 
 #[test]
