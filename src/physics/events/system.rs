@@ -231,7 +231,7 @@ impl EventDriven {
                     // only the balls of the cells it now comes near need looking at.
                     self.cells.shift(i, axis, towards);
                     if self.queue.current(&self.bounce[i]) {
-                        self.predict_entered(balls, i, axis, towards, &step);
+                        self.predict_near(balls, i, Some((axis, towards)), &step);
                     } else {
                         self.predict(balls, i, &step);
                     }
@@ -406,33 +406,27 @@ impl EventDriven {
     /// earliest of touching each ball in the neighbouring cells (its bounce), leaving its cell,
     /// and its contacts with walls and floors.
     fn predict(&mut self, balls: &[Ball], i: usize, step: &Step) {
-        let now = self.clock[i];
-        let path = step.integrator.path(&balls[i], &self.flight[i]);
-        let mut first = (step.horizon - now, None);
-        self.cells.neighbours(i, |j| {
-            if let Some(time) = self.touch(balls, i, j, &path, step, first.0) {
-                first = (time, Some(j));
-            }
-        });
-        self.bounce[i] = match first {
-            (time, Some(j)) => self.queue.event(now + time, What::Ball(j as u32)),
-            (_, None) => NOTHING,
-        };
-        self.schedule(balls, i, &path, step);
+        self.bounce[i] = NOTHING;
+        self.predict_near(balls, i, None, step);
     }
 
-    /// Predicts the next event of ball `i` (whose clock is now), which has just moved along
-    /// `axis` towards `towards` into another cell without changing course: its bounce stands,
-    /// unless a ball in the cells it has come near touches it first.
-    fn predict_entered(&mut self, balls: &[Ball], i: usize, axis: u8, towards: i8, step: &Step) {
+    /// Replaces ball `i`'s bounce (its clock is now) with an earlier one, if a ball in the
+    /// cells around it touches it first; then makes the earliest of its events its next. After
+    /// a move into another cell along `entered` (axis, towards) without changing course, only
+    /// the cells it has come near are searched: its bounce stands unless one of those is first.
+    fn predict_near(&mut self, balls: &[Ball], i: usize, entered: Option<(u8, i8)>, step: &Step) {
         let now = self.clock[i];
         let path = step.integrator.path(&balls[i], &self.flight[i]);
         let mut first = (self.bounce[i].time.min(step.horizon) - now, None);
-        self.cells.entered(i, axis, towards, |j| {
+        let visit = |j| {
             if let Some(time) = self.touch(balls, i, j, &path, step, first.0) {
                 first = (time, Some(j));
             }
-        });
+        };
+        match entered {
+            None => self.cells.neighbours(i, visit),
+            Some((axis, towards)) => self.cells.entered(i, axis, towards, visit),
+        }
         if let (time, Some(j)) = first {
             self.bounce[i] = self.queue.event(now + time, What::Ball(j as u32));
         }
