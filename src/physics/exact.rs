@@ -294,33 +294,33 @@ impl<'a> Bounds<'a> {
 
     /// The walls and floor faces `ball` rests on now: touching, not moving through them.
     pub fn support(&self, ball: &Ball) -> Support {
-        let mut support = Support::default();
-        for side in self.sides.iter().flatten() {
-            if side.distance(ball) == 0.0 && velocity(ball)[side.axis] == 0.0 {
-                support.push(side.normal());
-            }
-        }
-        for floor in self.floors {
-            if let Some(n) = resting_on_face(floor, ball) {
-                support.push(n);
-            }
-        }
-        support
+        self.surfaces(
+            |side| side.distance(ball) == 0.0 && velocity(ball)[side.axis] == 0.0,
+            |floor| resting_on_face(floor, ball),
+        )
     }
 
     /// The walls and floor faces within `gap` (a share of the radius) of `ball`, whatever its
     /// speed: what may hold up a ball that sleeps (`super::events::system`).
     pub fn near(&self, ball: &Ball, gap: f64) -> Support {
+        self.surfaces(
+            |side| side.distance(ball) <= gap * ball.radius,
+            |floor| face_within(floor, ball, gap),
+        )
+    }
+
+    /// The walls `wall` accepts and the floor faces `face` gives a normal for.
+    fn surfaces(
+        &self,
+        wall: impl Fn(&Side) -> bool,
+        face: impl Fn(&Floor) -> Option<[f64; 2]>,
+    ) -> Support {
         let mut support = Support::default();
-        for side in self.sides.iter().flatten() {
-            if side.distance(ball) <= gap * ball.radius {
-                support.push(side.normal());
-            }
+        for side in self.sides.iter().flatten().filter(|side| wall(side)) {
+            support.push(side.normal());
         }
-        for floor in self.floors {
-            if let Some(n) = face_within(floor, ball, gap) {
-                support.push(n);
-            }
+        for n in self.floors.iter().filter_map(face) {
+            support.push(n);
         }
         support
     }
