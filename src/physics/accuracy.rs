@@ -162,8 +162,8 @@ pub fn rms_speed(balls: &[Ball]) -> f64 {
     (sum / balls.len().max(1) as f64).sqrt()
 }
 
-/// Total kinetic energy, `Σ ½·m·|v|²` with masses ∝ radius² (flat discs of equal density): it never rises in a
-/// collision with restitution ≤ 1 (the tests and the soak run check it).
+/// Total kinetic energy, `Σ ½·m·|v|²` with masses ∝ radius² (flat discs of equal density):
+/// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
 pub fn kinetic_energy(balls: &[Ball]) -> f64 {
     balls
         .iter()

@@ -397,10 +397,7 @@ impl ContactSolver {
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
             let reach = ball_a.radius + ball_b.radius;
             // The scene's index of the later ball names the normal of balls at one spot.
-            let coincident = || {
-                let (nx, ny) = coincident_normal(order[a].max(order[b]));
-                [nx, ny]
-            };
+            let coincident = || coincident_normal(order[a].max(order[b]));
             let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
             let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
             // Both balls fall alike, but a ball pushed from above can close the gap by as
@@ -813,7 +810,7 @@ fn two(balls: &mut [Body], a: usize, b: usize) -> (&mut Body, &mut Body) {
 /// no direction. Any fixed direction would separate a pair, but a heap spawned on one spot
 /// would then spread along a single line; so ball `j` leaves at `j` golden angles, which
 /// fans successive balls out evenly round the circle, and depends on nothing but `j`.
-fn coincident_normal(j: usize) -> (f64, f64) {
+fn coincident_normal(j: usize) -> [f64; 2] {
     let angle = GOLDEN_ANGLE * j as f64;
-    (angle.cos(), angle.sin())
+    [angle.cos(), angle.sin()]
 }

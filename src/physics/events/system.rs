@@ -12,8 +12,9 @@
 //! `u` becomes `−e·u`.
 //!
 //! **Inelastic collapse.** With `e < 1`, balls can collide infinitely often in finite time
-//! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. The rules below,
-//! the first as for walls (`super::super::exact`), make every step finish and a pile rest:
+//! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. The
+//! rules below, the first as for walls (`super::super::exact`), make every step finish and a
+//! pile rest:
 //! - **Rest rule.** At the start of each step a ball that touches, without normal speed, a
 //!   wall, a floor or a ball that is itself held, and that gravity presses onto it, is *held*:
 //!   that part of gravity is removed from its step, as the wall's rest rule does. A collision
