@@ -55,9 +55,9 @@ impl Grid {
         self.rebuild_with_margins(balls, |_| 0.0);
     }
 
-    /// Like `rebuild`, with each ball grown by `margin(ball)` px, so that
-    /// [`Grid::for_each_overlapping_pair`] also reports pairs that are that close (the contact solver
-    /// looks at pairs that can touch within a step).
+    /// Like `rebuild`, with each ball grown by `margin(ball)` px, so that the pairs found also
+    /// include those that are that close (the contact solver looks at pairs that can touch
+    /// within a step).
     pub fn rebuild_with_margins(&mut self, balls: &[Ball], margin: impl Fn(&Ball) -> f64) {
         let Some(first) = balls.first() else {
             self.entries.clear();
