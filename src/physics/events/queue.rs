@@ -82,7 +82,7 @@ impl Queue {
         self.counts.clear();
         self.counts.resize(balls, 0);
         self.length = length;
-        self.days_per_frame = balls.max(1) as f64 / length;
+        self.days_per_frame = self.days_count() as f64 / length;
         self.lay_out();
     }
 
