@@ -126,6 +126,20 @@ struct Queued {
     delay_cs: u16,
 }
 
+impl Queued {
+    /// A slot whose buffers already hold a whole frame: batches are cut as the encoder frees
+    /// up, so a slot may first be used late in a run, and must not allocate then. (Memory is
+    /// only reserved; the system hands it over when it is first written.)
+    fn reserved(pixels: usize) -> Queued {
+        Queued {
+            pixels: Vec::with_capacity(pixels),
+            beneath: Vec::with_capacity(pixels),
+            lzw: Vec::with_capacity(pixels),
+            ..Queued::default()
+        }
+    }
+}
+
 /// Where a GIF writer's time went, summed over the frames so far (wall-clock).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct EncodeTimings {
@@ -172,8 +186,9 @@ impl<W: Write> GifWriter<W> {
             .map_err(gif_error)?;
         let delay_cs = u16::try_from(frame_ms / 10).map_err(io::Error::other)?;
         let frames = queue_frames(width.into(), height.into());
+        let pixels = usize::from(width) * usize::from(height);
         let batch = |coders| Batch {
-            frames: (0..frames).map(|_| Queued::default()).collect(),
+            frames: (0..frames).map(|_| Queued::reserved(pixels)).collect(),
             coders,
             table_len: palette.colours().len().next_power_of_two().max(2),
             ..Batch::default()
