@@ -191,23 +191,28 @@ impl Support {
     }
 
     /// Whether these surfaces hold a ball up completely against gravity `g`, leaving it no
-    /// slope to slide down: "up" (against `g`) points along one of the surfaces' normals, or
-    /// between two of them (a wall beside the ball counts: it stops a slide towards it).
+    /// way to slide: "up" (against `g`) is a sum of the surfaces' normals with weights no
+    /// less than 0, so pushes along the normals alone can balance gravity (the equilibrium
+    /// of a frictionless disc). In two dimensions that is: along one normal, or between two
+    /// normals less than half a turn apart (a wall beside the ball counts: it stops a slide
+    /// towards it, and so does a ball above it on the side it would slide to).
     pub fn hold_completely(&self, g: [f64; 2]) -> bool {
         if self.len > Self::MAX {
             return true;
         }
         let up = [-g[0], -g[1]];
-        let (mut left, mut right) = (false, false);
-        for n in self.normals[..self.len]
-            .iter()
-            .filter(|&&n| dot(n, up) >= 0.0)
-        {
-            let side = n[0] * up[1] - n[1] * up[0];
-            left |= side >= 0.0;
-            right |= side <= 0.0;
-        }
-        left && right
+        let normals = &self.normals[..self.len];
+        let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
+        normals.iter().enumerate().any(|(k, &a)| {
+            let along = cross(a, up) == 0.0 && dot(a, up) > 0.0;
+            along
+                || normals[k + 1..].iter().any(|&b| {
+                    // up = α·a + β·b, by Cramer's rule; both weights must be at least 0.
+                    let det = cross(a, b);
+                    let (alpha, beta) = (cross(up, b) / det, cross(a, up) / det);
+                    det != 0.0 && alpha >= 0.0 && beta >= 0.0
+                })
+        })
     }
 
     /// `forces` with gravity's push into every surface removed. On one surface gravity keeps
@@ -466,4 +471,52 @@ fn position(ball: &Ball) -> [f64; 2] {
 
 fn velocity(ball: &Ball) -> [f64; 2] {
     [ball.vx, ball.vy]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Gravity as in the lesson, straight down.
+    const G: [f64; 2] = [0.0, 0.5];
+
+    fn support(normals: &[[f64; 2]]) -> Support {
+        let mut support = Support::default();
+        for &[x, y] in normals {
+            let length = x.hypot(y);
+            support.push([x / length, y / length]);
+        }
+        support
+    }
+
+    #[test]
+    fn a_ball_is_held_completely_only_where_pushes_along_the_normals_can_balance_gravity() {
+        // Resting a little right of the top of the ball below, it slides off to the right...
+        let below = [0.01, -1.0];
+        // ...unless a ball on that side, even one a little higher, stops it.
+        let higher_on_the_right = [-0.93, 0.37];
+        let higher_on_the_left = [0.93, 0.37];
+        let cases = [
+            ("on a flat floor", vec![[0.0, -1.0]], true),
+            ("between two walls", vec![[1.0, 0.0], [-1.0, 0.0]], false),
+            ("just off the top of a ball", vec![below], false),
+            (
+                "off the top, stopped on the side it slides to",
+                vec![below, higher_on_the_right],
+                true,
+            ),
+            (
+                "off the top, touching the other side",
+                vec![below, higher_on_the_left],
+                false,
+            ),
+        ];
+        for (name, normals, expected) in cases {
+            let held = support(&normals).hold_completely(G);
+            assert_eq!(
+                held, expected,
+                "{name}: expected held = {expected}, got {held}"
+            );
+        }
+    }
 }

@@ -25,9 +25,10 @@
 //!   without end.
 //! - **Sleep rule** (DynamO's sleeping particles, Bannerman, Strobl & Pöschel): at the start
 //!   of each step, a ball no faster than gravity makes it in one step that walls, floors and
-//!   sleeping balls within 1 % of its radius hold up completely (no slope left to slide down:
-//!   straight up points between their normals) sleeps: it stops, and for the step it is a
-//!   fixed obstacle. Struck so hard that the rebound reaches `exact::REST_SPEED`, it wakes
+//!   sleeping balls within 1 % of its radius hold up completely (no way left to slide:
+//!   pushes along their normals alone can balance gravity) sleeps: it stops, and for the step
+//!   it is a fixed obstacle. Balls may hold each other up, so the sleepers are the largest
+//!   set of slow balls that holds itself up. Struck so hard that the rebound reaches `exact::REST_SPEED`, it wakes
 //!   and collides as usual. A settled pile sleeps whole and has no events at all.
 //! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
 //!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
@@ -317,11 +318,17 @@ impl EventDriven {
         }
     }
 
-    /// The sleep rule (after DynamO's sleeping particles, Bannerman et al.), from the bottom
-    /// of a pile up: a ball no faster than gravity makes it in one step, held up completely
-    /// (no slope left to slide down) by walls, floors and sleeping balls within [`SLEEP_GAP`]
-    /// of it, sleeps this step: it stops and stays put. Each step decides afresh, so a ball
-    /// whose support wakes or moves away falls again.
+    /// The sleep rule (after DynamO's sleeping particles, Bannerman et al.): a ball no faster
+    /// than gravity makes it in one step, held up completely (no way left to slide) by walls,
+    /// floors and sleeping balls within [`SLEEP_GAP`] of it, sleeps this step: it stops and
+    /// stays put. Each step decides afresh, so a ball whose support wakes or moves away falls
+    /// again.
+    ///
+    /// Balls can hold each other up (two wedged against each other, each keeping the other
+    /// from sliding), so the sleepers are found from the top down: every slow ball starts
+    /// asleep, and a ball the others asleep cannot hold up wakes, until none is left to wake
+    /// (the largest set that holds itself up). Growing the set from the bottom up instead
+    /// would never put such a pair to sleep, and the pile around them would jiggle on.
     fn find_asleep(&mut self, balls: &mut [Ball], step: &Step) {
         let forces = step.forces;
         let Some(g) = forces.gravity else {
@@ -330,14 +337,18 @@ impl EventDriven {
         let sleep_speed = g[0].hypot(g[1]) * forces.dt;
         let slow = |ball: &Ball| ball.vx.hypot(ball.vy) <= sleep_speed;
         let mut candidates: Vec<usize> = (0..balls.len()).filter(|&i| slow(&balls[i])).collect();
-        // Lowest first (furthest along gravity), so a pile is settled in one pass or few.
+        for &i in &candidates {
+            self.asleep[i] = true;
+        }
+        // Lowest first (furthest along gravity): a ball that wakes can only wake the balls
+        // it held up, above it, which then come later in the same pass.
         let depth = |i: usize| dot(g, [balls[i].x, balls[i].y]);
         candidates.sort_by(|&a, &b| depth(b).total_cmp(&depth(a)));
         let mut changed = true;
         while changed {
             changed = false;
             for &i in &candidates {
-                if self.asleep[i] {
+                if !self.asleep[i] {
                     continue;
                 }
                 let ball = &balls[i];
@@ -350,8 +361,8 @@ impl EventDriven {
                         }
                     }
                 });
-                if support.hold_completely(g) {
-                    self.asleep[i] = true;
+                if !support.hold_completely(g) {
+                    self.asleep[i] = false;
                     changed = true;
                 }
             }
