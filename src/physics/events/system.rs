@@ -530,7 +530,7 @@ impl EventDriven {
     fn collide(&mut self, balls: &mut [Ball], i: usize, j: usize, forces: &Forces, now: f64) {
         let (a, b) = (&balls[i], &balls[j]);
         let offset = [b.x - a.x, b.y - a.y];
-        let distance = offset[0].hypot(offset[1]);
+        let distance = (offset[0] * offset[0] + offset[1] * offset[1]).sqrt();
         if distance == 0.0 {
             return;
         }
