@@ -60,18 +60,20 @@ impl Side {
     /// The four walls for `ball`, with the same contact coordinates as `Ball::bounce_off_walls`.
     pub fn all(walls: &Walls, ball: &Ball) -> [Side; 4] {
         let r = ball.radius;
-        [
-            (0, r, -1.0),
-            (0, walls.width - r, 1.0),
-            (1, r, -1.0),
-            (1, walls.height - r, 1.0),
-        ]
-        .map(|(axis, contact, outward)| Side {
+        // Four calls, not a `map` over four tuples: this runs at every prediction, and the
+        // map was not inlined.
+        let side = |axis, contact, outward| Side {
             axis,
             contact,
             outward,
             damping: walls.damping,
-        })
+        };
+        [
+            side(0, r, -1.0),
+            side(0, walls.width - r, 1.0),
+            side(1, r, -1.0),
+            side(1, walls.height - r, 1.0),
+        ]
     }
 
     fn distance(&self, ball: &Ball) -> f64 {
