@@ -22,8 +22,9 @@
 //!    one sweep over every contact).
 //! 3. **Without gravity or drag**, balls fly straight between contacts, so an island is
 //!    solved touch by touch: it flies to the time its first contact touches (a closed
-//!    form), that contact alone is solved, and so on to the end of the step. An island that
-//!    already overlaps, or keeps colliding, is put back and takes the sub-steps.
+//!    form), that contact alone is solved, and so on to the end of the step. Balls that
+//!    start it overlapping are first set apart to touching. An island that still overlaps,
+//!    or keeps colliding, is put back and takes the sub-steps.
 //! 4. **Sub-steps**: otherwise, for each island, `iterations` times, for a sub-step `h` of
 //!    the step:
 //!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
@@ -296,7 +297,7 @@ impl ContactSolver {
                         motion.integrator.fly(&mut balls[i], &forces, forces.dt);
                         motion.integrator.kick_after(&mut balls[i], &forces);
                     }
-                    solve_positions(pairs, fixed, balls);
+                    solve_positions(pairs, fixed, balls, Push::Part);
                 }
             }
             let islands = self.island_of.iter();
@@ -533,8 +534,13 @@ fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut
 /// Solves an island touch by touch, if it can. When no force acts (the caller checks) the
 /// balls fly in straight lines, so when each contact touches has a closed form: the island
 /// flies to the first touch, that contact alone is solved there, and so on to the end of the
-/// step, instead of every contact once per sub-step. Returns `false`, with the balls as they
-/// were, when a contact overlaps beyond the slop (it needs the position pass) or the island
+/// step, instead of every contact once per sub-step.
+///
+/// Balls that start the step overlapping beyond the slop are first set apart, to touching
+/// (positions only): in a gas that is nearly always a pair the last step did not list
+/// because it was not closing, whose balls then met after one of them was struck. Returns
+/// `false`, with the balls as they were, when a contact still overlaps after that (a ball
+/// pushed into a third: the sub-steps' gentler position passes sort that out) or the island
 /// has more than [`TOUCHES_PER_CONTACT`] touches per contact (a cluster that keeps
 /// colliding): those take the sub-steps. `saved` is scratch space.
 fn solve_free_island(
@@ -554,6 +560,8 @@ fn solve_free_island(
             motion.integrator.fly(&mut balls[i], whole, time);
         }
     };
+    // Positions only, so no kinetic energy is added; an approaching pair then touches now.
+    solve_positions(pairs, fixed, balls, Push::Whole);
     let mut left = whole.dt;
     for _ in 0..TOUCHES_PER_CONTACT * (pairs.len() + fixed.len()) {
         let Some((first, touch)) = first_touch(pairs, fixed, balls) else {
@@ -627,8 +635,30 @@ fn solve_velocities(
     }
 }
 
-/// One Gauss–Seidel pass that pushes overlapping contacts partly apart, positions only.
-fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [Body]) {
+/// How far the position pass moves balls that overlap beyond the slop.
+#[derive(Clone, Copy, Debug)]
+enum Push {
+    /// [`PUSH`] of the overlap beyond the slop: a sub-step's share, so that a ball pushed by
+    /// many contacts does not overshoot.
+    Part,
+    /// All of it, to touching: for the few pairs of an island solved touch by touch.
+    Whole,
+}
+
+impl Push {
+    /// The distance to move two balls (or a ball and a wall) apart that are `separation`
+    /// apart (negative), where `allowed` is the slop.
+    fn distance(self, separation: f64, allowed: f64) -> f64 {
+        match self {
+            Push::Part => -(separation + allowed) * PUSH,
+            Push::Whole => -separation,
+        }
+    }
+}
+
+/// One Gauss–Seidel pass that pushes contacts overlapping beyond the slop apart by `push`,
+/// positions only.
+fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [Body], push: Push) {
     for contact in pairs {
         let (a, b) = two(balls, contact.a, contact.b);
         let allowed = SLOP * contact.reach / 2.0;
@@ -640,7 +670,7 @@ fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [B
         let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, || contact.state.normal);
         if separation < -allowed {
             // Each ball moves its share: the lighter one more.
-            let push = -(separation + allowed) * PUSH * contact.state.mass;
+            let push = push.distance(separation, allowed) * contact.state.mass;
             let (share_a, share_b) = (push * contact.inverse_a, push * contact.inverse_b);
             a.x -= share_a * nx;
             a.y -= share_a * ny;
@@ -653,7 +683,7 @@ fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [B
         let separation = contact.gap(ball);
         let allowed = SLOP * ball.radius;
         if separation < -allowed {
-            let push = -(separation + allowed) * PUSH;
+            let push = push.distance(separation, allowed);
             ball.x += push * contact.state.normal[0];
             ball.y += push * contact.state.normal[1];
         }
