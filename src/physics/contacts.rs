@@ -51,6 +51,7 @@ use super::exact::REST_SPEED;
 use super::grid::Grid;
 use super::integrator::{Forces, Movable};
 use super::motion::Motion;
+use super::walls::Walls;
 use super::work::{tally, Work};
 
 /// The gravity [`REST_SPEED`] was derived for, px/frame²: the rest speed scales with gravity,
@@ -179,6 +180,8 @@ pub struct ContactSolver {
     order: Vec<usize>,
     /// The pairs the grid finds, as places in its order.
     places: Vec<(usize, usize)>,
+    /// Of those, the pairs that could not touch as the step began (see `settle_unlisted`).
+    unlisted: Vec<(usize, usize)>,
     /// The balls (of `local`) with a contact this step, island by island.
     active: Vec<usize>,
     /// Where each island's balls are in `active` and its contacts in `pairs` and `fixed`.
@@ -241,6 +244,7 @@ impl ContactSolver {
             local: Vec::new(),
             order: Vec::new(),
             places: Vec::new(),
+            unlisted: Vec::new(),
             active: Vec::new(),
             islands: Vec::new(),
             parent: Vec::new(),
@@ -300,6 +304,7 @@ impl ContactSolver {
                     solve_positions(pairs, fixed, balls, Push::Part);
                 }
             }
+            let walls = effects.walls.as_ref();
             let islands = self.island_of.iter();
             for ((copy, &i), &island) in local.iter_mut().zip(&self.order).zip(islands) {
                 // A ball that can touch nothing in this step takes it in one go, as in the
@@ -307,14 +312,43 @@ impl ContactSolver {
                 if island == NO_ISLAND {
                     motion.integrator.step(copy, &whole);
                 }
-                let ball = &mut scene_balls[i];
-                (ball.x, ball.y, ball.vx, ball.vy) = (copy.x, copy.y, copy.vx, copy.vy);
-                if let Some(walls) = &effects.walls {
-                    ball.keep_inside(walls);
-                }
+                copy_back(copy, &mut scene_balls[i], walls);
             }
+            self.settle_unlisted(&mut local, sub, |copy, k| {
+                copy_back(copy, &mut scene_balls[self.order[k]], walls);
+            });
             self.local = local;
             self.remember();
+        }
+    }
+
+    /// A ball struck within the step leaves in a new direction and can run into a neighbour
+    /// it was not heading for when the contacts were found: that pair is not among them. Each
+    /// such pair that ends the step overlapping beyond the slop is set apart to touching
+    /// (positions only) and bounces now, by the same rule as any contact, so that no overlap
+    /// outlives the step. Momentum is kept and kinetic energy does not rise.
+    /// `moved` hears of each ball it moves (by its place).
+    fn settle_unlisted(
+        &self,
+        balls: &mut [Body],
+        sub: SubStep,
+        mut moved: impl FnMut(&Body, usize),
+    ) {
+        for &(a, b) in &self.unlisted {
+            let (ball_a, ball_b) = (&balls[a], &balls[b]);
+            let closest = (ball_a.radius + ball_b.radius) * (1.0 - SLOP / 2.0);
+            let (dx, dy) = (ball_b.x - ball_a.x, ball_b.y - ball_a.y);
+            if dx * dx + dy * dy >= closest * closest {
+                continue; // the common case, without a square root
+            }
+            let gap = gap_between(balls, &self.order, a, b);
+            let mut contact = pair_contact(balls, &self.order, self.restitution, (a, b), gap);
+            solve_positions(std::slice::from_ref(&contact), &[], balls, Push::Whole);
+            contact.state.separation = 0.0;
+            let (ball_a, ball_b) = two(balls, a, b);
+            contact.solve_velocity(ball_a, ball_b, sub);
+            moved(ball_a, a);
+            moved(ball_b, b);
         }
     }
 
@@ -392,33 +426,22 @@ impl ContactSolver {
         // The grid names each pair by the balls' places in its order, which are their places
         // in `local`: `a < b`, close together in memory, no lookup needed.
         self.pairs.clear();
+        self.unlisted.clear();
         let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
         self.grid.overlapping_places(&mut self.places, limit);
         for &(a, b) in &self.places {
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
-            let reach = ball_a.radius + ball_b.radius;
-            // The scene's index of the later ball names the normal of balls at one spot.
-            let coincident = || coincident_normal(order[a].max(order[b]));
-            let (separation, normal) = pair_gap(ball_a, ball_b, reach, coincident);
+            let gap @ (separation, normal) = gap_between(balls, order, a, b);
             let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
             // Both balls fall alike, but a ball pushed from above can close the gap by as
             // much as gravity moves it.
-            if !can_touch(separation, approach, fall, PAIR_MARGIN * reach / 2.0) {
-                continue;
+            let slack = PAIR_MARGIN * (ball_a.radius + ball_b.radius) / 2.0;
+            if can_touch(separation, approach, fall, slack) {
+                let contact = pair_contact(balls, order, self.restitution, (a, b), gap);
+                self.pairs.push(contact);
+            } else {
+                self.unlisted.push((a, b));
             }
-            // The key names the pair by its scene indices, which do not change.
-            let (i, j) = (order[a].min(order[b]), order[a].max(order[b]));
-            let key = (j as u64) << 32 | i as u64;
-            let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
-            let mass = mass_a * mass_b / (mass_a + mass_b);
-            self.pairs.push(PairContact {
-                a,
-                b,
-                reach,
-                state: ContactState::new(normal, separation, self.restitution, mass, key),
-                inverse_a: 1.0 / mass_a,
-                inverse_b: 1.0 / mass_b,
-            });
         }
     }
 
@@ -511,6 +534,48 @@ impl ContactSolver {
                 .filter(|&(_, impulse)| impulse > 0.0),
         );
         self.remembered.sort_unstable_by_key(|&(key, _)| key);
+    }
+}
+
+/// Puts the solver's `copy` of a ball back into the scene's `ball`, inside the `walls`.
+fn copy_back(copy: &Body, ball: &mut Ball, walls: Option<&Walls>) {
+    (ball.x, ball.y, ball.vx, ball.vy) = (copy.x, copy.y, copy.vx, copy.vy);
+    if let Some(walls) = walls {
+        ball.keep_inside(walls);
+    }
+}
+
+/// The gap between balls `a` and `b` (places in `balls`, the grid's order; `order` gives
+/// their scene indices) and the normal from `a` to `b`.
+fn gap_between(balls: &[Body], order: &[usize], a: usize, b: usize) -> (f64, [f64; 2]) {
+    let (ball_a, ball_b) = (&balls[a], &balls[b]);
+    // The scene's index of the later ball names the normal of balls at one spot.
+    let coincident = || coincident_normal(order[a].max(order[b]));
+    pair_gap(ball_a, ball_b, ball_a.radius + ball_b.radius, coincident)
+}
+
+/// The contact between balls `a` and `b` (as in [`gap_between`]), `separation` apart along
+/// `normal`.
+fn pair_contact(
+    balls: &[Body],
+    order: &[usize],
+    restitution: f64,
+    (a, b): (usize, usize),
+    (separation, normal): (f64, [f64; 2]),
+) -> PairContact {
+    let (ball_a, ball_b) = (&balls[a], &balls[b]);
+    // The key names the pair by its scene indices, which do not change.
+    let (i, j) = (order[a].min(order[b]), order[a].max(order[b]));
+    let key = (j as u64) << 32 | i as u64;
+    let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
+    let mass = mass_a * mass_b / (mass_a + mass_b);
+    PairContact {
+        a,
+        b,
+        reach: ball_a.radius + ball_b.radius,
+        state: ContactState::new(normal, separation, restitution, mass, key),
+        inverse_a: 1.0 / mass_a,
+        inverse_b: 1.0 / mass_b,
     }
 }
 
