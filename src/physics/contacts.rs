@@ -336,9 +336,7 @@ impl ContactSolver {
     ) {
         for &(a, b) in &self.unlisted {
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
-            let closest = (ball_a.radius + ball_b.radius) * (1.0 - SLOP / 2.0);
-            let (dx, dy) = (ball_b.x - ball_a.x, ball_b.y - ball_a.y);
-            if dx * dx + dy * dy >= closest * closest {
+            if !deeper_than_slop(ball_a, ball_b, ball_a.radius + ball_b.radius) {
                 continue; // the common case, without a square root
             }
             let gap = gap_between(balls, &self.order, a, b);
@@ -726,12 +724,10 @@ impl Push {
 fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [Body], push: Push) {
     for contact in pairs {
         let (a, b) = two(balls, contact.a, contact.b);
-        let allowed = SLOP * contact.reach / 2.0;
-        let (dx, dy) = (b.x - a.x, b.y - a.y);
-        let closest = contact.reach - allowed;
-        if dx * dx + dy * dy >= closest * closest {
+        if !deeper_than_slop(a, b, contact.reach) {
             continue; // the common case, without a square root
         }
+        let allowed = SLOP * contact.reach / 2.0;
         let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, || contact.state.normal);
         if separation < -allowed {
             // Each ball moves its share: the lighter one more.
@@ -867,6 +863,14 @@ impl FixedContact {
     fn gap(&self, ball: &Body) -> f64 {
         dot([ball.x, ball.y], self.state.normal) - self.offset
     }
+}
+
+/// Whether balls `a` and `b`, whose radii add up to `reach`, overlap by more than the slop
+/// ([`SLOP`] of their mean radius). Compared squared, without a square root.
+fn deeper_than_slop(a: &Body, b: &Body, reach: f64) -> bool {
+    let closest = reach - SLOP * reach / 2.0;
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    dx * dx + dy * dy < closest * closest
 }
 
 /// Mass of a ball: radius² (flat discs of equal density).

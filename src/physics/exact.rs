@@ -211,8 +211,7 @@ impl Support {
                 || normals[k + 1..].iter().any(|&b| {
                     // up = α·a + β·b, by Cramer's rule; both weights must be at least 0.
                     let det = cross(a, b);
-                    let (alpha, beta) = (cross(up, b) / det, cross(a, up) / det);
-                    det != 0.0 && alpha >= 0.0 && beta >= 0.0
+                    det != 0.0 && cross(up, b) / det >= 0.0 && cross(a, up) / det >= 0.0
                 })
         })
     }

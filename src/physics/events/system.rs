@@ -28,8 +28,9 @@
 //!   sleeping balls within 1 % of its radius hold up completely (no way left to slide:
 //!   pushes along their normals alone can balance gravity) sleeps: it stops, and for the step
 //!   it is a fixed obstacle. Balls may hold each other up, so the sleepers are the largest
-//!   set of slow balls that holds itself up. Struck so hard that the rebound reaches `exact::REST_SPEED`, it wakes
-//!   and collides as usual. A settled pile sleeps whole and has no events at all.
+//!   set of slow balls that holds itself up. Struck so hard that the rebound reaches
+//!   `exact::REST_SPEED`, it wakes and collides as usual. A settled pile sleeps whole and
+//!   has no events at all.
 //! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
 //!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
 //!   ball's previous collision is elastic, so a cascade of collisions at one moment ends.
