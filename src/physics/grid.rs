@@ -24,6 +24,15 @@ struct Entry {
     radius: f64,
 }
 
+impl Entry {
+    /// Whether the two balls overlap: centres closer than the sum of the radii.
+    fn overlaps(&self, other: &Entry) -> bool {
+        let (dx, dy) = (other.x - self.x, other.y - self.y);
+        let reach = self.radius + other.radius;
+        dx * dx + dy * dy < reach * reach
+    }
+}
+
 /// A uniform grid over the balls, rebuilt every frame into the same buffers.
 #[derive(Clone, Debug, Default)]
 pub struct Grid {
@@ -130,12 +139,24 @@ impl Grid {
     /// [`Grid::for_each_overlapping_place`], at most `limit` of them: balls piled on one spot
     /// make N² pairs, and memory must not follow.
     pub fn overlapping_places(&self, places: &mut Vec<(usize, usize)>, limit: usize) {
-        places.clear();
-        self.for_each_overlapping_place(|k, l| {
-            if places.len() < limit {
-                places.push((k, l));
+        // Every candidate is written at `found`, which moves on only past those that overlap:
+        // no branch on the test, which a gas passes at random (about one in fifteen), so the
+        // processor has nothing to mispredict.
+        let mut found = 0;
+        self.for_each_neighbourhood(|a, others| {
+            if found >= limit {
+                return;
+            }
+            if places.len() < found + others.len() {
+                places.resize(found + others.len(), (0, 0));
+            }
+            let entry = self.entries[a];
+            for (b, other) in others.clone().zip(&self.entries[others]) {
+                places[found] = (a, b);
+                found += usize::from(entry.overlaps(other));
             }
         });
+        places.truncate(found.min(limit));
     }
 
     /// Calls `found(i, j)` for every pair of balls that overlap (centres closer than the sum
@@ -154,6 +175,20 @@ impl Grid {
     /// (`k < l`) rather than by its index: a caller that keeps its balls in that order finds
     /// both balls of a pair near each other, without looking them up.
     pub fn for_each_overlapping_place(&self, mut found: impl FnMut(usize, usize)) {
+        self.for_each_neighbourhood(|a, others| {
+            let entry = self.entries[a];
+            for (b, other) in others.clone().zip(&self.entries[others]) {
+                if entry.overlaps(other) {
+                    found(a, b);
+                }
+            }
+        });
+    }
+
+    /// Calls `near(a, others)` for each place `a` in cell order with ranges of the places
+    /// after it that may overlap it: the later balls of its own cell and the cell to its
+    /// right, then the three cells below. Every pair of neighbouring balls is in one range.
+    fn for_each_neighbourhood(&self, mut near: impl FnMut(usize, Range<usize>)) {
         for row in 0..self.rows {
             for column in 0..self.columns {
                 let here = self.cells(row, column, column);
@@ -172,9 +207,8 @@ impl Grid {
                     0..0
                 };
                 for a in here {
-                    // Later balls of this cell and the cell to the right.
-                    self.overlaps(a, a + 1..right.end, &mut found);
-                    self.overlaps(a, below.clone(), &mut found);
+                    near(a, a + 1..right.end);
+                    near(a, below.clone());
                 }
             }
         }
@@ -190,18 +224,5 @@ impl Grid {
     fn cells(&self, row: usize, first: usize, last: usize) -> Range<usize> {
         let start = row * self.columns;
         self.cell_start[start + first]..self.cell_start[start + last + 1]
-    }
-
-    /// Hands `found` the places of entry `a` and of each entry in `others` that overlaps it.
-    fn overlaps(&self, a: usize, others: Range<usize>, found: &mut impl FnMut(usize, usize)) {
-        let entry = self.entries[a];
-        let first = others.start;
-        for (offset, other) in self.entries[others].iter().enumerate() {
-            let (dx, dy) = (other.x - entry.x, other.y - entry.y);
-            let reach = entry.radius + other.radius;
-            if dx * dx + dy * dy < reach * reach {
-                found(a, first + offset);
-            }
-        }
     }
 }
