@@ -455,28 +455,35 @@ impl ContactSolver {
             let (a, b) = (root(parent, contact.a), root(parent, contact.b));
             parent[a.max(b)] = a.min(b);
         }
-        // Number the islands of the balls with a contact in the order of their first ball;
-        // the rest stay at `NO_ISLAND`. Then count each island's balls and contacts.
+        // Number the islands in the order their contacts were found, visiting only the balls
+        // with a contact (the rest stay at `NO_ISLAND`), and count each island's balls.
+        // Islands share no ball and a ball's own motion does not depend on the others', so
+        // neither the islands' order nor their balls' changes a number: only each island's
+        // contacts must keep the order they were found in.
         let island_of = &mut self.island_of;
         island_of.clear();
         island_of.resize(count, NO_ISLAND);
-        let with_contact = self.pairs.iter().flat_map(|c| [c.a, c.b]);
-        for ball in with_contact.chain(self.fixed.iter().map(|c| c.ball)) {
-            island_of[ball] = 0;
-        }
         self.islands.clear();
         self.with_contact.clear();
-        for ball in 0..count {
+        let with_contact = self.pairs.iter().flat_map(|c| [c.a, c.b]);
+        for ball in with_contact.chain(self.fixed.iter().map(|c| c.ball)) {
             if island_of[ball] != NO_ISLAND {
-                let first = root(parent, ball);
-                if first == ball {
-                    island_of[ball] = self.islands.len();
-                    self.islands.push(Island::default());
-                } else {
-                    island_of[ball] = island_of[first]; // `first < ball`: numbered already
+                continue;
+            }
+            // The tree's root names the island; the first of its balls seen numbers it.
+            let first = root(parent, ball);
+            for member in [first, ball] {
+                if island_of[member] == NO_ISLAND {
+                    island_of[member] = match island_of[first] {
+                        NO_ISLAND => {
+                            self.islands.push(Island::default());
+                            self.islands.len() - 1
+                        }
+                        island => island,
+                    };
+                    self.islands[island_of[member]].balls.end += 1;
+                    self.with_contact.push(member);
                 }
-                self.islands[island_of[ball]].balls.end += 1;
-                self.with_contact.push(ball);
             }
         }
         for contact in &self.pairs {
