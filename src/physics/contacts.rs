@@ -179,9 +179,9 @@ pub struct ContactSolver {
     /// `order[k]` is the scene's index of `local[k]`.
     order: Vec<usize>,
     /// The pairs the grid finds, as places in its order.
-    places: Vec<(usize, usize)>,
+    places: Vec<[u32; 2]>,
     /// Of those, the pairs that could not touch as the step began (see `settle_unlisted`).
-    unlisted: Vec<(usize, usize)>,
+    unlisted: Vec<[u32; 2]>,
     /// The balls (of `local`) with a contact this step, island by island.
     active: Vec<usize>,
     /// Where each island's balls are in `active` and its contacts in `pairs` and `fixed`.
@@ -343,7 +343,8 @@ impl ContactSolver {
         sub: SubStep,
         mut moved: impl FnMut(&Body, usize),
     ) {
-        for &(a, b) in &self.unlisted {
+        for &[a, b] in &self.unlisted {
+            let (a, b) = (a as usize, b as usize);
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
             if !deeper_than_slop(ball_a, ball_b, ball_a.radius + ball_b.radius) {
                 continue; // the common case, without a square root
@@ -436,7 +437,8 @@ impl ContactSolver {
         self.unlisted.clear();
         let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
         self.grid.overlapping_places(&mut self.places, limit);
-        for &(a, b) in &self.places {
+        for &[a, b] in &self.places {
+            let (a, b) = (a as usize, b as usize);
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
             let gap @ (separation, normal) = gap_between(balls, order, a, b);
             let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
@@ -447,7 +449,7 @@ impl ContactSolver {
                 let contact = pair_contact(balls, order, self.restitution, (a, b), gap);
                 self.pairs.push(contact);
             } else {
-                self.unlisted.push((a, b));
+                self.unlisted.push([a as u32, b as u32]);
             }
         }
     }
