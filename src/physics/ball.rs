@@ -105,6 +105,11 @@ impl Trail {
         }
     }
 
+    /// Whether it keeps any points at all (its capacity is not 0).
+    pub fn keeps_points(&self) -> bool {
+        self.capacity > 0
+    }
+
     /// Adds the newest point and drops the oldest beyond capacity, so memory stays bounded.
     pub fn push(&mut self, x: f64, y: f64) {
         if self.capacity == 0 {
