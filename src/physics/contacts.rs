@@ -174,10 +174,9 @@ pub struct ContactSolver {
     fixed: Vec<FixedContact>,
     /// Last step's impulses by contact key, sorted by key: the warm start.
     remembered: Vec<(u64, f64)>,
-    /// The balls in the grid's order: what the solver moves.
+    /// The balls in the grid's order: what the solver moves. `grid.order()[k]` is the
+    /// scene's index of `local[k]`.
     local: Vec<Body>,
-    /// `order[k]` is the scene's index of `local[k]`.
-    order: Vec<usize>,
     /// The pairs the grid finds, as places in its order.
     places: Vec<[u32; 2]>,
     /// Of those, the pairs that could not touch as the step began (see `settle_unlisted`).
@@ -244,7 +243,6 @@ impl ContactSolver {
             fixed: Vec::new(),
             remembered: Vec::new(),
             local: Vec::new(),
-            order: Vec::new(),
             places: Vec::new(),
             unlisted: Vec::new(),
             active: Vec::new(),
@@ -320,11 +318,11 @@ impl ContactSolver {
                 motion.integrator.step(&mut local[k], &whole);
             }
             let walls = effects.walls.as_ref();
-            for (copy, &i) in local.iter_mut().zip(&self.order) {
+            for (copy, &i) in local.iter_mut().zip(self.grid.order()) {
                 copy_back(copy, &mut scene_balls[i], walls);
             }
             self.settle_unlisted(&mut local, sub, |copy, k| {
-                copy_back(copy, &mut scene_balls[self.order[k]], walls);
+                copy_back(copy, &mut scene_balls[self.grid.order()[k]], walls);
             });
             self.local = local;
             self.remember();
@@ -349,8 +347,9 @@ impl ContactSolver {
             if !deeper_than_slop(ball_a, ball_b, ball_a.radius + ball_b.radius) {
                 continue; // the common case, without a square root
             }
-            let gap = gap_between(balls, &self.order, a, b);
-            let mut contact = pair_contact(balls, &self.order, self.restitution, (a, b), gap);
+            let order = self.grid.order();
+            let gap = gap_between(balls, order, a, b);
+            let mut contact = pair_contact(balls, order, self.restitution, (a, b), gap);
             solve_positions(std::slice::from_ref(&contact), &[], balls, Push::Whole);
             contact.state.separation = 0.0;
             let (ball_a, ball_b) = two(balls, a, b);
@@ -378,12 +377,10 @@ impl ContactSolver {
             separation + approach.min(0.0) * dt - fall < slack
         };
         self.grid.rebuild_with_margins(balls, margin);
-        self.order.clear();
-        self.order.extend(self.grid.order());
         // Each ball's copy in the grid's order, and its walls and floors, in one pass.
         self.local.clear();
         self.fixed.clear();
-        for (k, &i) in self.order.iter().enumerate() {
+        for (k, &i) in self.grid.order().iter().enumerate() {
             let ball = &Body::of(&balls[i]);
             self.local.push(*ball);
             let centre = [ball.x, ball.y];
@@ -429,7 +426,7 @@ impl ContactSolver {
                 );
             }
         }
-        let (balls, order) = (&self.local, &self.order);
+        let (balls, order) = (&self.local, self.grid.order());
 
         // The grid names each pair by the balls' places in its order, which are their places
         // in `local`: `a < b`, close together in memory, no lookup needed.

@@ -219,8 +219,8 @@ impl Grid {
 
     /// The balls' indices in cell order (row by row), as of the last `rebuild`: balls near
     /// each other in space are mostly near each other in this order.
-    pub fn order(&self) -> impl Iterator<Item = usize> + '_ {
-        self.indices.iter().copied()
+    pub fn order(&self) -> &[usize] {
+        &self.indices
     }
 
     /// The entries of the cells from `first` to `last` column (inclusive) of `row`.
