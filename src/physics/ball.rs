@@ -112,7 +112,7 @@ impl Trail {
 
     /// Adds the newest point and drops the oldest beyond capacity, so memory stays bounded.
     pub fn push(&mut self, x: f64, y: f64) {
-        if self.capacity == 0 {
+        if !self.keeps_points() {
             return; // a trail that keeps nothing: not even a buffer to cycle through
         }
         self.points.push_back((x, y));
