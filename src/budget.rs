@@ -12,7 +12,7 @@ use std::fmt;
 use std::mem::size_of;
 
 use crate::gif::encoder::queue_frames;
-use crate::physics::Ball;
+use crate::physics::{Ball, Trail};
 use crate::scene::{BallSpec, Rgb, Scene};
 
 /// The memory a run may be predicted to need unless told otherwise, bytes (2 GiB).
@@ -79,14 +79,6 @@ fn megabytes(bytes: u64) -> String {
     format!("{} MB", bytes.div_ceil(1 << 20))
 }
 
-/// The ring buffer of a trail of `len` points once full: a power of two above `len`.
-fn trail_bytes(len: usize) -> u64 {
-    if len == 0 {
-        return 0;
-    }
-    ((len as u64 + 1).next_power_of_two().max(4)) * size_of::<(f64, f64)>() as u64
-}
-
 /// The renderer's shade tables: one per trail colour, as long as its longest trail needs.
 fn shade_table_bytes(balls: &[BallSpec]) -> u64 {
     let mut longest: HashMap<Rgb, u64> = HashMap::new();
@@ -114,7 +106,7 @@ impl Estimate {
         let balls = scene
             .balls
             .iter()
-            .map(|b| per_ball + grid + trail_bytes(b.trail));
+            .map(|b| per_ball + grid + Trail::heap_bytes(b.trail));
         let balls: u64 = balls.sum();
         let shades = shade_table_bytes(&scene.balls);
         let queued = queue_frames(scene.width, scene.height) as f64 * canvas;

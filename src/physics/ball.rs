@@ -90,49 +90,79 @@ impl Ball {
     }
 }
 /// The last few positions of a ball, oldest first, never more than its capacity.
+///
+/// A trail that keeps no points is a single empty pointer, so a ball without one is 48 bytes
+/// rather than 80: the event-driven step reads balls in an order no cache can foresee, and the
+/// fewer bytes a ball, the fewer of them are far away (`docs/exact.md`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Trail {
+    ring: Option<Box<Ring>>,
+}
+
+/// The points of a trail that keeps some, and how many it keeps.
+#[derive(Clone, Debug, PartialEq)]
+struct Ring {
     points: VecDeque<(f64, f64)>,
     capacity: usize,
 }
 
+/// The points of a trail that keeps none.
+static NO_POINTS: VecDeque<(f64, f64)> = VecDeque::new();
+
 impl Trail {
     /// An empty trail that keeps at most `capacity` points (0 keeps none).
     pub fn new(capacity: usize) -> Trail {
-        Trail {
-            points: VecDeque::new(),
-            capacity,
+        let ring = (capacity > 0).then(|| {
+            Box::new(Ring {
+                points: VecDeque::new(),
+                capacity,
+            })
+        });
+        Trail { ring }
+    }
+
+    /// The memory a trail of `capacity` points takes besides the ball once full, bytes: its
+    /// ring and the ring's buffer (a power of two above `capacity`).
+    pub fn heap_bytes(capacity: usize) -> u64 {
+        if capacity == 0 {
+            return 0;
         }
+        let buffer = (capacity as u64 + 1).next_power_of_two().max(4);
+        size_of::<Ring>() as u64 + buffer * size_of::<(f64, f64)>() as u64
     }
 
     /// Whether it keeps any points at all (its capacity is not 0).
     pub fn keeps_points(&self) -> bool {
-        self.capacity > 0
+        self.ring.is_some()
     }
 
     /// Adds the newest point and drops the oldest beyond capacity, so memory stays bounded.
     pub fn push(&mut self, x: f64, y: f64) {
-        if !self.keeps_points() {
+        let Some(ring) = &mut self.ring else {
             return; // a trail that keeps nothing: not even a buffer to cycle through
-        }
-        self.points.push_back((x, y));
-        if self.points.len() > self.capacity {
-            self.points.pop_front();
+        };
+        ring.points.push_back((x, y));
+        if ring.points.len() > ring.capacity {
+            ring.points.pop_front();
         }
     }
 
     /// How many points the trail holds now.
     pub fn len(&self) -> usize {
-        self.points.len()
+        self.points().len()
     }
 
     /// Whether the trail holds no point.
     pub fn is_empty(&self) -> bool {
-        self.points.is_empty()
+        self.points().is_empty()
     }
 
     /// The points, oldest first.
     pub fn iter(&self) -> impl ExactSizeIterator<Item = &(f64, f64)> + '_ {
-        self.points.iter()
+        self.points().iter()
+    }
+
+    fn points(&self) -> &VecDeque<(f64, f64)> {
+        self.ring.as_ref().map_or(&NO_POINTS, |ring| &ring.points)
     }
 }
