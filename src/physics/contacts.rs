@@ -84,8 +84,8 @@ const TOUCHES_PER_CONTACT: usize = 4;
 /// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
 const PUSH: f64 = 0.2;
 
-/// A ball as the solver moves it: centre, velocity and radius, without the trail. Half the
-/// size of a [`Ball`], so the solver's copy of 100,000 balls is half the memory to sweep.
+/// A ball as the solver moves it: centre, velocity and radius, without the trail (which
+/// the solver never reads), so its copy of the balls in grid order is all it sweeps.
 #[derive(Clone, Copy, Debug)]
 struct Body {
     x: f64,
