@@ -13,34 +13,13 @@
 
 use std::time::Duration;
 
-use bouncing_ball::physics::motion::CollisionMode;
-use bouncing_ball::scene::random::Random;
-use bouncing_ball::Scene;
-use bouncing_ball_bench::lattice_gas;
+use bouncing_ball_bench::{exact_gas, EXACT_GAS_STIR as STIR};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-
-const PACKING: f64 = 0.3;
-const RADIUS: f64 = 3.0;
-/// Starting speed along each axis is up to this, px/frame.
-const SPEED: f64 = 2.0;
-/// Frames run before measuring, so the lattice has melted into a gas.
-const STIR: u32 = 20;
-
-fn gas(count: usize) -> Scene {
-    let mut scene = lattice_gas(
-        &vec![RADIUS; count],
-        PACKING,
-        SPEED,
-        &mut Random::new(count as u64),
-    );
-    scene.motion.collisions = CollisionMode::Exact;
-    scene
-}
 
 fn exact_events(c: &mut Criterion) {
     let mut group = c.benchmark_group("exact_ball_collisions");
     for count in [1_000, 10_000, 100_000] {
-        let scene = gas(count);
+        let scene = exact_gas(count);
         scene.validate().expect("a valid benchmark scene");
         let mut simulation = scene.simulation();
         for _ in 0..STIR {
