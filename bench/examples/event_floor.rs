@@ -243,7 +243,8 @@ impl BareGas {
         let n = self.columns as i64;
         let cell = self.cell[i] as i64;
         let (column, row) = (cell % n, cell / n);
-        let near = |c: i64| (c - 1).max(0)..(c + 2).min(n);
+        // The cells from one before to one after; clipped to the grid below.
+        let near = |c: i64| c - 1..c + 2;
         let mut first = (f64::INFINITY, NONE);
         let (columns, rows) = match entered {
             None => (near(column), near(row)),
@@ -310,6 +311,8 @@ impl BareGas {
             match self.balls[i].what {
                 WALL => {
                     let ball = &mut self.balls[i];
+                    // Reflect each axis whose wall the ball meets: a hair further along its
+                    // velocity it would be outside (rounding may leave it just short).
                     let inside = RADIUS..=self.side - RADIUS;
                     if !inside.contains(&(ball.x + ball.vx.signum() * 1e-9)) {
                         ball.vx = -ball.vx;
@@ -373,8 +376,8 @@ impl BareGas {
     }
 }
 
-/// Runs `frames` frames of `step` and returns the nanoseconds per collision event, given the
-/// collisions counted so far.
+/// Runs `frames` frames of `step`, which returns the collision events of its frame, and
+/// returns the nanoseconds per collision event.
 fn time_turn(frames: u32, mut step: impl FnMut() -> u64) -> f64 {
     let start = Instant::now();
     let collisions: u64 = (0..frames).map(|_| step()).sum();
