@@ -12,6 +12,7 @@ use std::fmt;
 use std::mem::size_of;
 
 use crate::gif::encoder::queue_frames;
+use crate::physics::maths;
 use crate::physics::{Ball, Trail};
 use crate::scene::{BallSpec, Rgb, Scene};
 
@@ -139,7 +140,7 @@ impl Estimate {
             dots += 1.0 + trail;
             // Trail dots shrink with age: on average a third of the ball's area.
             drawn += area * (1.0 + trail / 3.0);
-            let speed = ball.vx.hypot(ball.vy).min(canvas);
+            let speed = maths::hypot(ball.vx, ball.vy).min(canvas);
             moving += (2.0 * ball.radius + 2.0 + speed).powi(2) * 4.0;
         }
         let changed = moving.min(canvas);

@@ -8,7 +8,6 @@
 
 use std::fs::{self, File};
 use std::io::{self, Write};
-use std::os::unix::fs::{FileTypeExt, MetadataExt};
 use std::path::{Path, PathBuf};
 
 use tempfile::NamedTempFile;
@@ -81,8 +80,9 @@ pub struct OutputRefused {
 /// Where a path's bytes would land, to tell two names for one file apart from two files.
 #[derive(Debug, PartialEq, Eq)]
 enum Identity {
-    /// An existing file (links followed): its device and inode, so hard links match too.
-    Existing { device: u64, inode: u64 },
+    /// An existing file (links followed), as the system identifies it (device and inode on
+    /// Unix, volume and file index on Windows), so hard links match too.
+    Existing(same_file::Handle),
     /// A file still to be made: its folder's real path and its name.
     New(PathBuf),
     /// A file in a folder that does not exist; making its temporary file will say so.
@@ -90,11 +90,8 @@ enum Identity {
 }
 
 fn identity(path: &Path) -> Identity {
-    if let Ok(meta) = fs::metadata(path) {
-        return Identity::Existing {
-            device: meta.dev(),
-            inode: meta.ino(),
-        };
+    if let Ok(handle) = same_file::Handle::from_path(path) {
+        return Identity::Existing(handle);
     }
     let folder = folder_of(path);
     match (fs::canonicalize(folder), path.file_name()) {
@@ -120,8 +117,18 @@ fn unusable(path: &Path, may_be_stdout: bool) -> Option<String> {
     if path.as_os_str().is_empty() {
         return Some("is empty; give a file name".to_string());
     }
-    if path.as_os_str().as_encoded_bytes().ends_with(b"/") || path.file_name().is_none() {
+    let last = path.as_os_str().as_encoded_bytes().last().copied();
+    if last.is_some_and(|byte| std::path::is_separator(char::from(byte)))
+        || path.file_name().is_none()
+    {
         return Some("names a folder, not a file; give a file name".to_string());
+    }
+    if cfg!(windows) && path.file_name().is_some_and(is_reserved_on_windows) {
+        return Some(
+            "is a device name on Windows (CON, PRN, AUX, NUL, COM1-9, LPT1-9, with any \
+             extension); an output must be a regular file or a new name"
+                .to_string(),
+        );
     }
     let Ok(link) = fs::symlink_metadata(path) else {
         return None; // a new file
@@ -137,14 +144,8 @@ fn unusable(path: &Path, may_be_stdout: bool) -> Option<String> {
         return None;
     } else if kind.is_dir() {
         "a folder"
-    } else if kind.is_fifo() {
-        "a named pipe (FIFO)"
-    } else if kind.is_socket() {
-        "a socket"
-    } else if kind.is_char_device() || kind.is_block_device() {
-        "a device"
     } else {
-        "not a regular file"
+        special_file(&kind)
     };
     let hint = if may_be_stdout && !kind.is_dir() {
         " (for standard output, give -)"
@@ -154,6 +155,47 @@ fn unusable(path: &Path, may_be_stdout: bool) -> Option<String> {
     Some(format!(
         "is {what}; an output must be a regular file or a new name{hint}"
     ))
+}
+
+/// What a file that is neither a regular file nor a folder is, in words.
+#[cfg(unix)]
+fn special_file(kind: &fs::FileType) -> &'static str {
+    use std::os::unix::fs::FileTypeExt;
+    if kind.is_fifo() {
+        "a named pipe (FIFO)"
+    } else if kind.is_socket() {
+        "a socket"
+    } else if kind.is_char_device() || kind.is_block_device() {
+        "a device"
+    } else {
+        "not a regular file"
+    }
+}
+
+/// What a file that is neither a regular file nor a folder is, in words.
+#[cfg(not(unix))]
+fn special_file(_kind: &fs::FileType) -> &'static str {
+    "not a regular file"
+}
+
+/// Whether a file name is one Windows keeps for a device in every folder: `CON`, `PRN`, `AUX`,
+/// `NUL`, `COM1`-`COM9`, `LPT1`-`LPT9` (and the superscript ¹²³ forms), in any case, with any
+/// extension and trailing dots or spaces. Writing `nul.gif` there writes to no file at all.
+pub fn is_reserved_on_windows(name: &std::ffi::OsStr) -> bool {
+    let name = name.to_string_lossy();
+    let stem = name.split('.').next().unwrap_or_default();
+    let stem = stem.trim_end_matches([' ', '.']).to_ascii_uppercase();
+    match stem.as_str() {
+        "CON" | "PRN" | "AUX" | "NUL" => true,
+        _ => {
+            let (port, digit) = stem.split_at(stem.len().min(3));
+            matches!(port, "COM" | "LPT")
+                && matches!(
+                    digit,
+                    "1" | "2" | "3" | "4" | "5" | "6" | "7" | "8" | "9" | "¹" | "²" | "³"
+                )
+        }
+    }
 }
 
 /// Refuses, before any work, outputs that would replace something that is not a regular
@@ -254,18 +296,41 @@ impl AtomicFile {
         let at = || OutputError::at(&self.path);
         let file = self.temp.as_file();
         file.sync_all().map_err(at())?;
-        // Temporary files are private (0600); outputs should read like any file we write.
-        use std::os::unix::fs::PermissionsExt;
-        file.set_permissions(fs::Permissions::from_mode(0o644))
-            .map_err(at())?;
+        readable_by_all(file).map_err(at())?;
         Ok(file.metadata().map_err(at())?.len())
     }
 
     fn rename_into_place(self) -> Result<(), OutputError> {
         let at = OutputError::at(&self.path);
-        self.temp.persist(&self.target).map_err(|e| at(e.error))?;
+        self.temp
+            .persist(&self.target)
+            .map_err(|e| at(explain_rename(e.error)))?;
         Ok(())
     }
+}
+
+/// Temporary files are private (0600 on Unix); outputs should read like any file we write.
+#[cfg(unix)]
+fn readable_by_all(file: &File) -> io::Result<()> {
+    use std::os::unix::fs::PermissionsExt;
+    file.set_permissions(fs::Permissions::from_mode(0o644))
+}
+
+/// On Windows a new file takes its folder's permissions, as any file written there does.
+#[cfg(not(unix))]
+fn readable_by_all(_file: &File) -> io::Result<()> {
+    Ok(())
+}
+
+/// On Windows a file another program holds open (an image viewer showing the last GIF) cannot
+/// be replaced, and the system only says "access is denied": say what to do about it.
+fn explain_rename(error: io::Error) -> io::Error {
+    if cfg!(windows) && error.kind() == io::ErrorKind::PermissionDenied {
+        let why =
+            "it is open in another program (close it and run again); the old file is as it was";
+        return io::Error::new(error.kind(), why);
+    }
+    error
 }
 
 /// Puts every finished file in place and returns their sizes, in order. Nothing is renamed

@@ -5,9 +5,10 @@
 //!
 //! - exit 0, having changed only the outputs it named, each of which decodes; or
 //! - exit 1 or 2 with one error line (warnings aside), creating or changing nothing; or
-//! - reach the time cap, be sent SIGTERM, and exit 143 in one line, changing nothing.
+//! - reach the time cap, be asked to stop (SIGTERM; Ctrl-Break on Windows), and exit with that
+//!   request's code (143; 131) in one line, changing nothing.
 //!
-//! Never a panic, a crash, or a process that ignores SIGTERM.
+//! Never a panic, a crash, or a process that ignores the request.
 //!
 //! Fast by default (a few seconds). The longer mode sets the number of cases per property:
 //! `HOSTILE_CASES=5000 cargo test --release --test hostile -- --nocapture`
@@ -23,7 +24,7 @@ use std::time::Duration;
 use bouncing_ball::budget::Estimate;
 use bouncing_ball::scene::file;
 use bouncing_ball::{run, Outputs};
-use common::process::{args, changes, run_capped, snapshot, Caps, Finished};
+use common::process::{args, changes, run_capped, snapshot, Caps, Finished, OddFolder, Request};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
@@ -62,25 +63,6 @@ fn caps() -> Caps {
     }
 }
 
-/// A temporary folder holding things an output must not replace.
-fn odd_folder() -> (tempfile::TempDir, std::os::unix::net::UnixListener) {
-    let dir = tempfile::tempdir().unwrap();
-    let p = dir.path();
-    std::fs::write(p.join("previous.gif"), b"previous good gif").unwrap();
-    std::fs::write(p.join("previous.png"), b"previous good png").unwrap();
-    std::fs::write(p.join("my.toml"), file::PRESETS[0].1).unwrap();
-    let fifo = std::ffi::CString::new(p.join("fifo").as_os_str().as_encoded_bytes()).unwrap();
-    // SAFETY: a valid C string naming a new path in our temporary folder.
-    assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o644) }, 0, "mkfifo");
-    std::fs::create_dir(p.join("folder")).unwrap();
-    let socket = std::os::unix::net::UnixListener::bind(p.join("socket")).unwrap();
-    for target in ["fifo", "folder", "previous.gif", "my.toml"] {
-        std::os::unix::fs::symlink(target, p.join(format!("link-to-{target}"))).unwrap();
-    }
-    std::os::unix::fs::symlink("nothing", p.join("broken-link")).unwrap();
-    (dir, socket)
-}
-
 /// Paths the generated command lines use: all relative, none leaving the folder.
 const PATHS: &[&str] = &[
     "out.gif",
@@ -104,6 +86,8 @@ const PATHS: &[&str] = &[
     "a b.gif",
     "ünï.png",
     "folder/inside.gif",
+    "nul.gif",
+    "CON",
 ];
 
 /// Odd values for any flag.
@@ -215,7 +199,7 @@ fn flag_and_value() -> BoxedStrategy<Vec<String>> {
         40 => prop::strategy::Union::new(pairs),
         10 => (prop::sample::select(flags), one_of(ODD)).prop_map(|(f, v)| vec![f.to_string(), v]),
         5 => one_of(&["-q", "--quiet", "-n", "--frames=3", "--bogus", "x", "-", "--vx=-3"]).prop_map(|a| vec![a]),
-        // Rarely, a run far longer than the cap: it must stop on SIGTERM and write nothing.
+        // Rarely, a run far longer than the cap: it must stop when asked and write nothing.
         1 => Just(vec!["--frames".to_string(), "4000000000".to_string()]),
     ]
     .boxed()
@@ -268,6 +252,8 @@ fn judge(
             run.status, run.stderr
         ))
     };
+    let (stop_name, stop_code) = Request::Terminate.expected();
+    let stopped_by = format!("stopped by {stop_name}");
     if run.stderr.contains("panicked") {
         return say("panicked");
     }
@@ -312,12 +298,12 @@ fn judge(
             }
             Ok(())
         }
-        1 | 2 | 143 => {
+        code if code == 1 || code == 2 || code == stop_code => {
             if errors.len() != 1 {
                 return say("an error should be one line");
             }
-            if code == 143 && !(run.capped && errors[0].contains("stopped by SIGTERM")) {
-                return say("143 without our SIGTERM");
+            if code == stop_code && !(run.capped && errors[0].contains(&stopped_by)) {
+                return say("a stop's exit code without our request to stop");
             }
             if !changed.is_empty() {
                 return say("a failed run created or changed files");
@@ -328,7 +314,7 @@ fn judge(
     }
 }
 
-/// How many runs ended each way: exit code, or "capped" for a SIGTERM at the time cap.
+/// How many runs ended each way: exit code, or "capped" for a stop requested at the time cap.
 #[derive(Default)]
 struct Tally(RefCell<BTreeMap<String, usize>>);
 
@@ -361,7 +347,8 @@ fn run_and_judge(
     scene: Option<&[u8]>,
     tally: &Tally,
 ) -> Result<(), TestCaseError> {
-    let (dir, _socket) = odd_folder();
+    let odd = OddFolder::new();
+    let dir = &odd.dir;
     if let Some(text) = scene {
         std::fs::write(dir.path().join("s.toml"), text).unwrap();
     }

@@ -219,6 +219,31 @@ fn every_stage_is_a_folder_whose_mod_rs_says_what_it_owns() {
     }
 }
 
+/// The platform's maths library rounds these differently on each system (see
+/// `src/physics/maths.rs`); the program calls them only through that module.
+const PLATFORM_MATHS: [&str; 13] = [
+    ".sin(", ".cos(", ".tan(", ".hypot(", ".ln(", ".ln_1p(", ".log10(", ".log2(", ".exp(",
+    ".exp_m1(", ".powf(", ".atan2(", ".cbrt(",
+];
+
+#[test]
+fn the_program_computes_transcendental_functions_the_same_on_every_system() {
+    let mut found = Vec::new();
+    for (module, text) in modules() {
+        if module == "physics::maths" {
+            continue;
+        }
+        let code = code(&text);
+        for call in PLATFORM_MATHS.iter().filter(|call| code.contains(*call)) {
+            found.push(format!("{module} calls f64::{}", &call[1..call.len() - 1]));
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "use physics::maths instead, so every system computes the same bits: {found:?}"
+    );
+}
+
 #[test]
 fn the_cycle_finder_finds_a_cycle() {
     let mut graph = BTreeMap::new();

@@ -5,12 +5,13 @@
 mod common;
 
 use std::io::Read;
-use std::os::unix::net::UnixListener;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
 use common::decode_gif;
-use common::process::{args, changes, run_capped, send, snapshot, spawn, Caps, Finished};
+use common::process::{
+    args, changes, run_capped, send, snapshot, spawn, Caps, Finished, OddFolder, Request,
+};
 
 /// A run that ought to be refused before any work: it gets seconds, not minutes.
 fn quick() -> Caps {
@@ -49,57 +50,69 @@ fn assert_refused(dir: &Path, list: &[&str], code: i32, says: &str) -> Finished 
     run
 }
 
-/// A folder with a previous GIF and PNG, a scene file, a FIFO, a folder, a socket, and links
-/// to each.
-fn odd_folder() -> (tempfile::TempDir, UnixListener) {
-    let dir = tempfile::tempdir().unwrap();
-    let p = dir.path();
-    std::fs::write(p.join("previous.gif"), b"previous good gif").unwrap();
-    std::fs::write(p.join("previous.png"), b"previous good png").unwrap();
-    std::fs::copy(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lesson.toml"),
-        p.join("my.toml"),
-    )
-    .unwrap();
-    let fifo = std::ffi::CString::new(p.join("fifo").as_os_str().as_encoded_bytes()).unwrap();
-    // SAFETY: a valid C string naming a new path in our temporary folder.
-    assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o644) }, 0, "mkfifo");
-    std::fs::create_dir(p.join("folder")).unwrap();
-    let socket = UnixListener::bind(p.join("socket")).unwrap();
-    for target in ["fifo", "folder", "socket", "previous.gif"] {
-        std::os::unix::fs::symlink(target, p.join(format!("link-to-{target}"))).unwrap();
+/// Asserts that each `(flag, path, says)` is refused up front with exit 2, changing nothing.
+fn assert_outputs_refused(dir: &Path, cases: &[(&str, &str, &str)]) {
+    for (flag, path, says) in cases {
+        let list = [flag, path, "--frames", "4000000000", "-q"];
+        assert_refused(dir, &list, 2, says);
     }
-    std::os::unix::fs::symlink("nothing", p.join("broken-link")).unwrap();
-    std::fs::hard_link(p.join("my.toml"), p.join("hard-link.toml")).unwrap();
-    (dir, socket)
 }
 
 #[test]
 fn an_output_that_is_not_a_regular_file_is_refused_before_any_work() {
-    let (dir, _socket) = odd_folder();
-    let long = ["--frames", "4000000000", "-q"];
-    for (flag, path, says) in [
-        ("--gif", "fifo", "is a named pipe (FIFO)"),
-        ("--png", "folder", "is a folder"),
-        ("--png", "folder/", "names a folder"),
-        ("--png", ".", "names a folder"),
-        ("--trace", "socket", "is a socket"),
-        ("--trace", "link-to-fifo", "is a named pipe (FIFO)"),
-        ("--gif", "link-to-folder", "is a folder"),
-        ("--png", "link-to-socket", "is a socket"),
-        ("--gif", "broken-link", "symbolic link to nothing"),
-        ("--gif", "-", "only for --trace"),
-        ("--png", "-", "only for --trace"),
-        ("--trace", "", "a value is required for '--trace <TRACE>'"),
-    ] {
-        let list: Vec<&str> = [flag, path].iter().chain(&long).copied().collect();
-        assert_refused(dir.path(), &list, 2, says);
-    }
+    let dir = OddFolder::new();
+    assert_outputs_refused(
+        dir.path(),
+        &[
+            ("--png", "folder", "is a folder"),
+            ("--png", "folder/", "names a folder"),
+            ("--png", ".", "names a folder"),
+            ("--gif", "-", "only for --trace"),
+            ("--png", "-", "only for --trace"),
+            ("--trace", "", "a value is required for '--trace <TRACE>'"),
+        ],
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn an_output_that_is_a_fifo_a_socket_or_a_link_to_one_is_refused_before_any_work() {
+    let dir = OddFolder::new();
+    assert_outputs_refused(
+        dir.path(),
+        &[
+            ("--gif", "fifo", "is a named pipe (FIFO)"),
+            ("--trace", "socket", "is a socket"),
+            ("--trace", "link-to-fifo", "is a named pipe (FIFO)"),
+            ("--gif", "link-to-folder", "is a folder"),
+            ("--png", "link-to-socket", "is a socket"),
+            ("--gif", "broken-link", "symbolic link to nothing"),
+        ],
+    );
+}
+
+#[cfg(windows)]
+#[test]
+fn an_output_named_for_a_windows_device_or_a_folder_is_refused_before_any_work() {
+    let dir = OddFolder::new();
+    let device = "is a device name on Windows";
+    assert_outputs_refused(
+        dir.path(),
+        &[
+            ("--gif", "NUL", device),
+            ("--png", "con.png", device),
+            ("--trace", "Aux.csv", device),
+            ("--gif", "folder\\lpt1.gif", device),
+            ("--png", "COM9 .png", device),
+            ("--gif", "folder", "is a folder"),
+            ("--png", "folder\\", "names a folder"),
+        ],
+    );
 }
 
 #[test]
 fn two_outputs_naming_one_file_or_the_scene_file_are_refused() {
-    let (dir, _socket) = odd_folder();
+    let dir = OddFolder::new();
     for (list, says) in [
         (
             &["--gif", "o.gif", "--png", "o.gif"][..],
@@ -108,10 +121,6 @@ fn two_outputs_naming_one_file_or_the_scene_file_are_refused() {
         (
             &["--gif", "o.gif", "--png", "./o.gif"],
             "same file as --gif",
-        ),
-        (
-            &["--gif", "previous.gif", "--trace", "link-to-previous.gif"],
-            "same file",
         ),
         (
             &["--scene", "my.toml", "--gif", "my.toml"],
@@ -125,7 +134,7 @@ fn two_outputs_naming_one_file_or_the_scene_file_are_refused() {
             &["--png", "o.png", "--plot", "o.png"][..],
             "same file as --png o.png",
         ),
-        (&["--plot", "fifo"], "--plot fifo: is a named pipe (FIFO)"),
+        (&["--plot", "folder"], "--plot folder: is a folder"),
     ] {
         let mut list = list.to_vec();
         list.extend(["--frames", "4000000000", "-q"]);
@@ -133,9 +142,23 @@ fn two_outputs_naming_one_file_or_the_scene_file_are_refused() {
     }
 }
 
+#[cfg(unix)]
+#[test]
+fn an_output_through_a_link_is_the_file_it_points_to() {
+    let dir = OddFolder::new();
+    let list = ["--gif", "previous.gif", "--trace", "link-to-previous.gif"];
+    assert_refused(
+        dir.path(),
+        &[&list[..], &["-n", "4000000000", "-q"]].concat(),
+        2,
+        "same file",
+    );
+}
+
+#[cfg(unix)]
 #[test]
 fn an_output_through_a_link_replaces_the_file_and_keeps_the_link() {
-    let (dir, _socket) = odd_folder();
+    let dir = OddFolder::new();
     let run = run_capped(
         dir.path(),
         &args(&[
@@ -154,6 +177,62 @@ fn an_output_through_a_link_replaces_the_file_and_keeps_the_link() {
     let link = std::fs::symlink_metadata(dir.path().join("link-to-previous.gif")).unwrap();
     assert!(link.file_type().is_symlink(), "the link is still a link");
     assert_eq!(decode_gif(&dir.path().join("previous.gif")).frames.len(), 3);
+}
+
+/// An image viewer on Windows holds the file it shows open without letting others delete it,
+/// and a file held so cannot be replaced: the run says so in one line and changes nothing.
+#[cfg(windows)]
+#[test]
+fn an_output_open_in_another_program_fails_in_one_line_leaving_the_old_file() {
+    use std::os::windows::fs::OpenOptionsExt;
+    let dir = OddFolder::new();
+    let viewer = std::fs::OpenOptions::new()
+        .read(true)
+        .share_mode(windows_sys::Win32::Storage::FileSystem::FILE_SHARE_READ)
+        .open(dir.path().join("previous.gif"))
+        .unwrap();
+    let list = ["--gif", "previous.gif", "--png", "new.png", "-n", "3", "-q"];
+    assert_refused(
+        dir.path(),
+        &list,
+        1,
+        "previous.gif: it is open in another program",
+    );
+    drop(viewer);
+}
+
+#[test]
+fn paths_with_spaces_and_non_ascii_names_in_a_subfolder_work_for_every_input_and_output() {
+    let dir = tempfile::tempdir().unwrap();
+    // Joined with the system's separator: a backslash on Windows.
+    let folder = Path::new("mes balles ü");
+    std::fs::create_dir(dir.path().join(folder)).unwrap();
+    let lesson = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lesson.toml");
+    std::fs::copy(lesson, dir.path().join(folder).join("scène 1.toml")).unwrap();
+    let named = |name: &str| folder.join(name).to_string_lossy().into_owned();
+    let list = [
+        "--scene".to_string(),
+        named("scène 1.toml"),
+        "--gif".to_string(),
+        named("balle rebondissante.gif"),
+        "--png".to_string(),
+        named("dernière image.png"),
+        "--trace".to_string(),
+        named("trajectoire ü.csv"),
+        "-q".to_string(),
+    ];
+    let run = run_capped(dir.path(), &list, b"", quick());
+    assert_eq!(run.code(), Some(0), "{list:?}: {}", run.stderr);
+    let written = dir.path().join(folder);
+    assert_eq!(
+        decode_gif(&written.join("balle rebondissante.gif"))
+            .frames
+            .len(),
+        200
+    );
+    assert!(written.join("dernière image.png").is_file());
+    let trace = std::fs::read_to_string(written.join("trajectoire ü.csv")).unwrap();
+    assert_eq!(trace.lines().count(), 201, "header and 200 rows");
 }
 
 #[test]
@@ -204,7 +283,7 @@ fn trace_dash_streams_the_csv_to_stdout_and_a_closed_pipe_is_no_error() {
 
 #[test]
 fn a_png_path_that_is_a_folder_fails_before_the_work_and_the_old_gif_survives() {
-    let (dir, _socket) = odd_folder();
+    let dir = OddFolder::new();
     let list = [
         "--preset",
         "elastic",
@@ -222,10 +301,11 @@ fn a_png_path_that_is_a_folder_fails_before_the_work_and_the_old_gif_survives() 
     assert!(run.elapsed < Duration::from_secs(10));
 }
 
-/// Starts a long run, waits for its temporary files, sends `signal`, and checks it stops
-/// with `code`, one line, no temporary file, and every earlier file as it was.
-fn assert_signal_stops_cleanly(signal: i32, code: i32, name: &str) {
-    let (dir, _socket) = odd_folder();
+/// Starts a long run, waits for its temporary files, sends `request`, and checks it stops
+/// with the request's exit code, one line, no temporary file, and every earlier file as it was.
+fn assert_signal_stops_cleanly(request: Request) {
+    let (name, code) = request.expected();
+    let dir = OddFolder::new();
     let before = snapshot(dir.path());
     let list = args(&[
         "--preset",
@@ -263,7 +343,7 @@ fn assert_signal_stops_cleanly(signal: i32, code: i32, name: &str) {
         std::thread::sleep(Duration::from_millis(20));
     }
     std::thread::sleep(Duration::from_millis(300)); // some frames into the run
-    send(&child, signal);
+    send(&child, request);
     let output = child.wait_with_output().unwrap();
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(code), "{name}: {stderr}");
@@ -279,18 +359,18 @@ fn assert_signal_stops_cleanly(signal: i32, code: i32, name: &str) {
 }
 
 #[test]
-fn sigint_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
-    assert_signal_stops_cleanly(libc::SIGINT, 130, "SIGINT");
+fn ctrl_c_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
+    assert_signal_stops_cleanly(Request::Interrupt);
 }
 
 #[test]
-fn sigterm_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
-    assert_signal_stops_cleanly(libc::SIGTERM, 143, "SIGTERM");
+fn sigterm_or_ctrl_break_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
+    assert_signal_stops_cleanly(Request::Terminate);
 }
 
 #[test]
-fn sighup_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
-    assert_signal_stops_cleanly(libc::SIGHUP, 129, "SIGHUP");
+fn sighup_or_a_closed_console_stops_a_long_run_leaving_no_temp_file_and_earlier_outputs_intact() {
+    assert_signal_stops_cleanly(Request::Hangup);
 }
 
 /// A scene file of `count` balls spread over a `side`² box, each of `radius` with a trail of
@@ -389,8 +469,13 @@ fn finite_inputs_that_overflow_stop_with_exit_2_naming_ball_frame_and_inputs() {
 
 #[test]
 fn a_scene_that_is_not_a_regular_file_or_is_too_long_is_refused() {
-    let (dir, _socket) = odd_folder();
-    for path in ["fifo", "folder", "link-to-fifo", "socket"] {
+    let dir = OddFolder::new();
+    let odd: &[&str] = if cfg!(unix) {
+        &["fifo", "folder", "link-to-fifo", "socket"]
+    } else {
+        &["folder"]
+    };
+    for path in odd {
         assert_refused(dir.path(), &["--scene", path], 2, "not a regular file");
     }
     let long = format!(
@@ -464,7 +549,7 @@ fn a_scene_on_standard_input_runs() {
 
 #[test]
 fn unclear_messages_now_say_what_is_wrong_in_one_line() {
-    let (dir, _socket) = odd_folder();
+    let dir = OddFolder::new();
     std::fs::write(dir.path().join("no-height.toml"), "width = 320\n").unwrap();
     std::fs::write(
         dir.path().join("unclosed.toml"),
@@ -540,7 +625,7 @@ fn a_short_frame_delay_and_an_empty_scene_draw_warnings_not_errors() {
             line.starts_with(warns),
             "{list:?}: first stderr line {line:?}"
         );
-        send(&child, libc::SIGINT); // the long one need not finish
+        send(&child, Request::Interrupt); // the long one need not finish
         let status = child.wait().unwrap();
         assert!(
             matches!(status.code(), Some(0 | 130)),

@@ -426,3 +426,20 @@ fn the_iterations_key_sets_the_contact_solver_iterations_and_defaults_to_the_con
         "no key: the default"
     );
 }
+
+#[test]
+fn a_scene_file_saved_by_a_windows_editor_with_crlf_and_a_byte_order_mark_reads_the_same() {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, text) in PRESETS {
+        let plain = dir.path().join("plain.toml");
+        let windows = dir.path().join("windows.toml");
+        std::fs::write(&plain, text).unwrap();
+        std::fs::write(&windows, format!("\u{feff}{}", text.replace('\n', "\r\n"))).unwrap();
+        let read = |path: &std::path::Path| format!("{:?}", scene_file::load(path, 7).unwrap());
+        assert_eq!(
+            read(&windows),
+            read(&plain),
+            "preset {name} with CRLF and a BOM"
+        );
+    }
+}

@@ -6,6 +6,8 @@
 
 use super::ball::Ball;
 use super::effects::Effects;
+use super::grid::Grid;
+use super::maths;
 use super::motion::Motion;
 use super::walls::Walls;
 
@@ -23,10 +25,10 @@ pub const FLOOR: f64 = HEIGHT - RADIUS;
 /// gravity `g` and the lesson's per-frame `drag` (`dv/dt = g − k·v`, `k = −ln(1 − drag)`):
 /// `v = g/k + (v0 − g/k)·e^(−kt)`, `x = x0 + (g/k)·t + (v0 − g/k)·(1 − e^(−kt))/k`.
 pub fn free_flight(x0: f64, v0: f64, g: f64, drag: f64, t: f64) -> (f64, f64) {
-    let k = -(-drag).ln_1p();
+    let k = -maths::ln_1p(-drag);
     let terminal = g / k;
     // 1 − e^(−kt), written so that it keeps its digits when kt is small.
-    let lost = -(-k * t).exp_m1();
+    let lost = -maths::exp_m1(-k * t);
     (
         x0 + terminal * t + (v0 - terminal) * lost / k,
         terminal + (v0 - terminal) * (1.0 - lost),
@@ -69,7 +71,7 @@ pub fn free_flight_error(motion: Motion, drag: f64, frames: u32) -> f64 {
     let t = f64::from(frames);
     let (x, _) = free_flight(x0, vx0, 0.0, drag, t);
     let (y, _) = free_flight(y0, vy0, GRAVITY, drag, t);
-    (ball.x - x).hypot(ball.y - y)
+    maths::hypot(ball.x - x, ball.y - y)
 }
 
 /// What one bounce looked like, heights in px above the floor's contact line.
@@ -128,7 +130,10 @@ pub fn energy_drift(motion: Motion, frames: u64) -> f64 {
 
 /// The slope of the least-squares line through `(ln x, ln y)`: the order `p` in `y ∝ x^p`.
 pub fn fitted_order(points: &[(f64, f64)]) -> f64 {
-    let logs: Vec<(f64, f64)> = points.iter().map(|&(x, y)| (x.ln(), y.ln())).collect();
+    let logs: Vec<(f64, f64)> = points
+        .iter()
+        .map(|&(x, y)| (maths::ln(x), maths::ln(y)))
+        .collect();
     let n = logs.len() as f64;
     let (mx, my) = logs
         .iter()
@@ -171,14 +176,11 @@ pub fn kinetic_energy(balls: &[Ball]) -> f64 {
         .sum()
 }
 
-/// How deep the most overlapping pair overlaps, px (0 if none does), checking every pair:
-/// a measure for tests and the soak run, never used to step.
+/// How deep the most overlapping pair overlaps, px (0 if none does): a measure for tests and
+/// the soak run, never used to step. The grid finds the overlapping pairs, so a check after
+/// every frame of a thousand balls costs about as much as the frame.
 pub fn deepest_overlap(balls: &[Ball]) -> f64 {
-    let mut deepest = 0.0f64;
-    for (i, a) in balls.iter().enumerate() {
-        for b in &balls[i + 1..] {
-            deepest = deepest.max(a.radius + b.radius - (b.x - a.x).hypot(b.y - a.y));
-        }
-    }
-    deepest
+    let mut grid = Grid::new();
+    grid.rebuild(balls);
+    grid.deepest_overlap(balls)
 }

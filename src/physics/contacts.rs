@@ -50,6 +50,7 @@ use super::effects::Effects;
 use super::exact::REST_SPEED;
 use super::grid::Grid;
 use super::integrator::{Forces, Movable};
+use super::maths;
 use super::motion::Motion;
 use super::walls::Walls;
 use super::work::{tally, Work};
@@ -263,7 +264,7 @@ impl ContactSolver {
         let (steps, whole) = motion.plan(effects);
         let iterations = motion.iterations;
         let forces = Forces::new(effects).split(steps * iterations);
-        let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
+        let gravity = effects.gravity.map_or(0.0, |[gx, gy]| maths::hypot(gx, gy));
         let sub = SubStep {
             h: forces.dt,
             loaded: gravity > 0.0,
@@ -363,7 +364,7 @@ impl ContactSolver {
     /// walls and floors, as the balls are copied into the grid's order; then the ball pairs
     /// from the grid, in its order.
     fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
-        let gravity = effects.gravity.map_or(0.0, |[gx, gy]| gx.hypot(gy));
+        let gravity = effects.gravity.map_or(0.0, |[gx, gy]| maths::hypot(gx, gy));
         // How far gravity alone can move a ball in the step.
         let fall = gravity * dt * dt;
         // How far each ball can get in this step, and a little more, so that it stops at a
@@ -926,5 +927,5 @@ fn two(balls: &mut [Body], a: usize, b: usize) -> (&mut Body, &mut Body) {
 /// fans successive balls out evenly round the circle, and depends on nothing but `j`.
 fn coincident_normal(j: usize) -> [f64; 2] {
     let angle = GOLDEN_ANGLE * j as f64;
-    [angle.cos(), angle.sin()]
+    [maths::cos(angle), maths::sin(angle)]
 }

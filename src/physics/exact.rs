@@ -28,6 +28,7 @@ use super::ball::Ball;
 use super::effects::Effects;
 use super::floor::{dot, sub, Floor};
 use super::integrator::{Forces, Integrator};
+use super::maths;
 use super::poly::Poly;
 use super::toi::{self, TOUCH_SPEED};
 use super::walls::Walls;
@@ -144,7 +145,7 @@ impl Contact {
             Contact::Face { normal, damping } => bounce_along(ball, normal, damping, forces),
             Contact::End { point, damping } => {
                 let offset = sub([ball.x, ball.y], point);
-                let distance = offset[0].hypot(offset[1]);
+                let distance = maths::hypot(offset[0], offset[1]);
                 if distance > 0.0 {
                     let n = [offset[0] / distance, offset[1] / distance];
                     bounce_along(ball, n, damping, forces);
@@ -484,7 +485,7 @@ mod tests {
     fn support(normals: &[[f64; 2]]) -> Support {
         let mut support = Support::default();
         for &[x, y] in normals {
-            let length = x.hypot(y);
+            let length = maths::hypot(x, y);
             support.push([x / length, y / length]);
         }
         support

@@ -4,6 +4,7 @@
 //! flip the normal component of its velocity with damping, keep the tangential one.
 
 use super::ball::Ball;
+use super::maths;
 
 /// A line segment from `from` to `to` (px) and the share of normal speed a bounce keeps.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -27,7 +28,7 @@ impl Floor {
     /// The unit normal (left of `from → to`); which side a ball is on is the sign along it.
     pub fn normal(&self) -> [f64; 2] {
         let [dx, dy] = sub(self.to, self.from);
-        let length = dx.hypot(dy);
+        let length = maths::hypot(dx, dy);
         [dy / length, -dx / length]
     }
 
@@ -47,7 +48,7 @@ impl Floor {
             self.from[1] + t * (self.to[1] - self.from[1]),
         ];
         let offset = sub(centre, point);
-        let distance = offset[0].hypot(offset[1]);
+        let distance = maths::hypot(offset[0], offset[1]);
         if distance > 0.0 {
             ([offset[0] / distance, offset[1] / distance], distance)
         } else {
@@ -101,7 +102,7 @@ impl Floor {
             self.to
         };
         let offset = sub([ball.x, ball.y], end);
-        let distance = offset[0].hypot(offset[1]);
+        let distance = maths::hypot(offset[0], offset[1]);
         if distance >= ball.radius || distance == 0.0 {
             return;
         }

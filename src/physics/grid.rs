@@ -10,6 +10,7 @@
 use std::ops::Range;
 
 use super::ball::Ball;
+use super::maths;
 
 /// The grid never has more than about this many cells per ball: when balls are spread thin
 /// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).
@@ -172,6 +173,17 @@ impl Grid {
             let (i, j) = (self.indices[k], self.indices[l]);
             found(i.min(j), i.max(j));
         });
+    }
+
+    /// How deep the most overlapping pair of `balls` overlaps, px (0 if none does), as of the
+    /// last `rebuild` with them: a measure for tests, plots and the soak run, never used to step.
+    pub fn deepest_overlap(&self, balls: &[Ball]) -> f64 {
+        let mut deepest: f64 = 0.0;
+        self.for_each_overlapping_pair(|i, j| {
+            let (a, b) = (&balls[i], &balls[j]);
+            deepest = deepest.max(a.radius + b.radius - maths::hypot(b.x - a.x, b.y - a.y));
+        });
+        deepest
     }
 
     /// The same pairs in the same order, each ball named by its place in [`Grid::order`]

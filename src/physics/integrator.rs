@@ -12,6 +12,7 @@
 
 use super::ball::Ball;
 use super::effects::Effects;
+use super::maths;
 use super::poly::Poly;
 use super::work::{tally, Work};
 
@@ -71,7 +72,7 @@ impl Forces {
             dt: 1.0,
             gravity: effects.gravity,
             drag: effects.drag.map(|drag| Drag {
-                rate: -(-drag).ln_1p(),
+                rate: -maths::ln_1p(-drag),
                 keep: 1.0 - drag,
             }),
         }
@@ -87,7 +88,7 @@ impl Forces {
         Forces {
             dt,
             drag: self.drag.map(|drag| Drag {
-                keep: drag.keep.powf(dt),
+                keep: maths::powf(drag.keep, dt),
                 ..drag
             }),
             ..self

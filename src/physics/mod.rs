@@ -25,6 +25,7 @@ pub mod exact;
 pub mod floor;
 pub mod grid;
 pub mod integrator;
+pub mod maths;
 pub mod motion;
 pub mod poly;
 pub mod simulation;

@@ -9,6 +9,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::record::{Panel, Recording, Series};
 
+use crate::physics::maths;
+
 /// The picture's width, of the legend strip right of each panel, and the height of a title
 /// line and of each panel, px.
 const WIDTH: u32 = 960;
@@ -95,7 +97,7 @@ fn value_range<'a>(values: impl Iterator<Item = &'a f64>) -> (f64, f64) {
 
 /// Tick labels with as many decimals as the span needs and no more.
 fn tick_label(span: f64) -> impl Fn(&f64) -> String {
-    let decimals = (2.0 - span.log10().floor()).clamp(0.0, 6.0) as usize;
+    let decimals = (2.0 - maths::log10(span).floor()).clamp(0.0, 6.0) as usize;
     move |v| format!("{v:.decimals$}")
 }
 

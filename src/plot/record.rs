@@ -7,6 +7,7 @@
 use crate::physics::accuracy::kinetic_energy;
 use crate::physics::ball::Ball;
 use crate::physics::grid::Grid;
+use crate::physics::maths;
 use crate::scene::Scene;
 
 /// The panel a series is drawn in, top to bottom in this order.
@@ -71,12 +72,7 @@ impl Overlaps {
     /// as the grid finds them, never stored: balls piled on one spot make N² of them.
     fn deepest(&mut self, balls: &[Ball]) -> f64 {
         self.grid.rebuild(balls);
-        let mut deepest: f64 = 0.0;
-        self.grid.for_each_overlapping_pair(|i, j| {
-            let (a, b) = (&balls[i], &balls[j]);
-            deepest = deepest.max(a.radius + b.radius - (b.x - a.x).hypot(b.y - a.y));
-        });
-        deepest
+        self.grid.deepest_overlap(balls)
     }
 }
 
@@ -161,7 +157,7 @@ impl Recording {
                 self.last_vy = Some(ball.vy);
                 vec![
                     self.height_above_floor(ball),
-                    ball.vx.hypot(ball.vy),
+                    maths::hypot(ball.vx, ball.vy),
                     kinetic + self.potential(ball),
                 ]
             }

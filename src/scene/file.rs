@@ -10,6 +10,7 @@ use super::random::Random;
 use super::spec::{BallSpec, InvalidValue, Rgb, Scene, MAX_BALLS};
 use crate::physics::floor::Floor;
 use crate::physics::integrator::Integrator;
+use crate::physics::maths;
 use crate::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
 
 /// The bundled presets: name and TOML text, one per lesson exercise.
@@ -96,7 +97,9 @@ pub fn load(path: &Path, seed: u64) -> Result<Scene, SceneFileError> {
         )));
     }
     let text = String::from_utf8(bytes).map_err(|_| read_error("not UTF-8 text".to_string()))?;
-    parse(&file, &text, seed)
+    // Windows editors (Notepad among them) may begin UTF-8 with a byte-order mark; TOML has
+    // no place for one. Line endings need nothing: TOML takes CRLF as it takes LF.
+    parse(&file, text.strip_prefix('\u{feff}').unwrap_or(&text), seed)
 }
 
 /// Loads a bundled preset by name.
@@ -449,8 +452,8 @@ impl Spawn {
         BallSpec {
             x,
             y,
-            vx: speed * angle.cos(),
-            vy: speed * angle.sin(),
+            vx: speed * maths::cos(angle),
+            vy: speed * maths::sin(angle),
             radius: self.radius,
             colour: cycle(&self.colours).unwrap_or(BALL_COLOUR),
             trail_colour: cycle(&self.trail_colours).unwrap_or(TRAIL_COLOUR),

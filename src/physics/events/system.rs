@@ -44,6 +44,7 @@ use super::super::effects::Effects;
 use super::super::exact::{self, Bounds, Contact, Support, REST_SPEED};
 use super::super::floor::dot;
 use super::super::integrator::{Forces, Integrator};
+use super::super::maths;
 use super::super::poly::Poly;
 use super::super::toi::{self, TOUCH_SPEED};
 use super::super::work::{tally, Work};
@@ -335,8 +336,8 @@ impl EventDriven {
         let Some(g) = forces.gravity else {
             return;
         };
-        let sleep_speed = g[0].hypot(g[1]) * forces.dt;
-        let slow = |ball: &Ball| ball.vx.hypot(ball.vy) <= sleep_speed;
+        let sleep_speed = maths::hypot(g[0], g[1]) * forces.dt;
+        let slow = |ball: &Ball| maths::hypot(ball.vx, ball.vy) <= sleep_speed;
         let mut candidates: Vec<usize> = (0..balls.len()).filter(|&i| slow(&balls[i])).collect();
         for &i in &candidates {
             self.asleep[i] = true;
@@ -612,7 +613,7 @@ fn resting_on(ball: &Ball, below: &Ball, forces: &Forces) -> Option<[f64; 2]> {
 /// radii.
 fn leaning_on(ball: &Ball, below: &Ball, gap: f64) -> Option<[f64; 2]> {
     let offset = [ball.x - below.x, ball.y - below.y];
-    let distance = offset[0].hypot(offset[1]);
+    let distance = maths::hypot(offset[0], offset[1]);
     let reach = ball.radius + below.radius;
     if distance == 0.0 || distance - reach > gap * reach {
         return None;
