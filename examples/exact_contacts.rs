@@ -16,8 +16,8 @@ use bouncing_ball::physics::accuracy::lesson_effects;
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;
-use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
 
 const AIM: f64 = 7.0;

@@ -12,9 +12,9 @@
 
 use bouncing_ball::physics::accuracy::{deepest_overlap, rms_speed};
 use bouncing_ball::physics::effects::Effects;
-use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::walls::Walls;
+use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
 use bouncing_ball::scene::random::jittered_lattice;
 

@@ -9,9 +9,9 @@ use bouncing_ball::physics::accuracy::{
     WIDTH,
 };
 use bouncing_ball::physics::ball::Ball;
-use bouncing_ball::physics::exact::REST_SPEED;
-use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::tolerances::REST_SPEED;
+use bouncing_ball::physics::Integrator;
 
 /// Released from rest at y 40: 188 px above the floor's contact line.
 const DROP: f64 = FLOOR - 40.0;

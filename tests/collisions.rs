@@ -4,9 +4,9 @@
 
 use bouncing_ball::physics::accuracy::{deepest_overlap, kinetic_energy};
 use bouncing_ball::physics::ball::Ball;
-use bouncing_ball::physics::contacts::SLOP;
-use bouncing_ball::physics::grid::Grid;
+use bouncing_ball::physics::contacts::Grid;
 use bouncing_ball::physics::simulation::Simulation;
+use bouncing_ball::physics::tolerances::SLOP;
 use bouncing_ball::Scene;
 use common::white_ball as spec;
 use proptest::prelude::*;

@@ -6,11 +6,11 @@ use bouncing_ball::physics::accuracy::{
 };
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
-use bouncing_ball::physics::events::system::MAX_EVENTS_PER_BALL;
 use bouncing_ball::physics::floor::Floor;
-use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::tolerances::MAX_EVENTS_PER_BALL;
 use bouncing_ball::physics::walls::Walls;
+use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
 use bouncing_ball::scene::file as scene_file;
 use bouncing_ball::scene::random::jittered_lattice;

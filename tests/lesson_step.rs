@@ -1,10 +1,13 @@
-//! `Ball::step` is the lesson's loop written out; the general solver (`Simulation` with the
-//! default motion) must give the same numbers on every single-ball scene the lesson could
-//! set up, so a learner who reads or edits `Ball::step` reads the program's real physics.
+//! `Ball::step` is the lesson's loop written out, and every run of the lesson's settings takes
+//! it, so a learner who edits it sees the result. The general solver (`Motion::step`, which
+//! scenes beyond the lesson take) must give the same numbers on every single-ball scene the
+//! lesson could set up, so the two never drift apart.
 
 mod common;
 
-use bouncing_ball::physics::{Ball, Walls};
+use bouncing_ball::physics::work::{self, Work};
+use bouncing_ball::physics::{Ball, Integrator, Motion, Walls};
+use bouncing_ball::scene::file as scene_file;
 use bouncing_ball::{BallSpec, Scene};
 use common::lesson_scene;
 use proptest::prelude::*;
@@ -27,11 +30,12 @@ fn first_difference(scene: &Scene, frames: u32) -> Option<(u32, Ball, Ball)> {
         damping: scene.walls.expect("the lesson's scene has walls"),
     };
     let mut lesson = Ball::new(spec.x, spec.y, spec.vx, spec.vy, spec.radius, spec.trail);
-    let mut general = scene.simulation();
+    let mut solver = lesson.clone();
+    let effects = scene.effects();
     for frame in 0..frames {
         lesson.step(gravity, &walls);
-        general.step();
-        let solver = &general.balls()[0];
+        scene.motion.advance(&mut solver, &effects);
+        solver.record_trail();
         let equal = [
             (lesson.x, solver.x),
             (lesson.y, solver.y),
@@ -42,7 +46,7 @@ fn first_difference(scene: &Scene, frames: u32) -> Option<(u32, Ball, Ball)> {
         .all(|&(a, b)| same(a, b))
             && lesson.trail == solver.trail;
         if !equal {
-            return Some((frame, lesson, solver.clone()));
+            return Some((frame, lesson, solver));
         }
     }
     None
@@ -54,6 +58,40 @@ fn the_lessons_step_and_the_general_solver_agree_on_the_lessons_scene() {
     if let Some((frame, lesson, solver)) = first_difference(&scene, 2000) {
         panic!("frame {frame}: Ball::step gives {lesson:?}, the solver gives {solver:?}");
     }
+}
+
+#[test]
+fn every_run_of_the_lessons_settings_takes_ball_step() {
+    for name in ["lesson", "elastic", "no-gravity", "heavy", "moon", "many"] {
+        let scene = scene_file::preset(name, 1).unwrap();
+        let mut simulation = scene.simulation();
+        assert!(simulation.takes_the_lessons_step(), "preset {name}");
+        work::reset();
+        for _ in 0..10 {
+            simulation.step();
+        }
+        let steps = 10 * scene.balls.len() as u64;
+        assert_eq!(work::count(Work::LessonStep), steps, "preset {name}");
+    }
+    for name in ["drag", "slope", "billiards", "pile"] {
+        let scene = scene_file::preset(name, 1).unwrap();
+        let mut simulation = scene.simulation();
+        assert!(!simulation.takes_the_lessons_step(), "preset {name}");
+        work::reset();
+        simulation.step();
+        assert_eq!(work::count(Work::LessonStep), 0, "preset {name}");
+    }
+    let rk4 = Scene {
+        motion: Motion {
+            integrator: Integrator::Rk4,
+            ..Motion::default()
+        },
+        ..lesson_scene()
+    };
+    assert!(
+        !rk4.simulation().takes_the_lessons_step(),
+        "rk4 is beyond the lesson"
+    );
 }
 
 #[test]

@@ -3,9 +3,9 @@
 //! in its box, energy obeys its bound, and two runs give the same bits.
 
 use bouncing_ball::physics::floor::Floor;
-use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::simulation::Simulation;
+use bouncing_ball::physics::Integrator;
 use bouncing_ball::{BallSpec, Scene};
 use clap::ValueEnum;
 use proptest::prelude::*;

@@ -7,9 +7,9 @@ mod common;
 use bouncing_ball::physics::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
-use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::walls::Walls;
+use bouncing_ball::physics::Integrator;
 
 const INTEGRATORS: [Integrator; 4] = [
     Integrator::ExplicitEuler,
@@ -360,7 +360,7 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
 
 mod ball_ball {
     use bouncing_ball::physics::accuracy::{deepest_overlap, kinetic_energy};
-    use bouncing_ball::physics::contacts::SLOP;
+    use bouncing_ball::physics::tolerances::SLOP;
     use bouncing_ball::scene::random::Random;
     use bouncing_ball::Scene;
 

@@ -9,8 +9,8 @@ use std::time::Duration;
 use bouncing_ball::physics::accuracy::{lesson_effects, GRAVITY, RADIUS};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
-use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::Integrator;
 use criterion::{criterion_group, criterion_main, Criterion};
 
 const INTEGRATORS: [Integrator; 4] = [

@@ -17,7 +17,7 @@ use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::time::Instant;
 
-use bouncing_ball::physics::toi;
+use bouncing_ball::physics::integrate::toi;
 use bouncing_ball::Scene;
 use bouncing_ball_bench::{exact_gas, EXACT_GAS_RADIUS as RADIUS, EXACT_GAS_STIR as STIR};
 

@@ -17,8 +17,8 @@ use bouncing_ball::output::OutputError;
 use bouncing_ball::physics::accuracy::{
     apex_height, bounces, energy_drift, fitted_order, free_flight_error, FLOOR, GRAVITY,
 };
-use bouncing_ball::physics::integrator::Integrator;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::Integrator;
 use bouncing_ball::plot::{flag_name, save_png};
 use plotters::prelude::*;
 

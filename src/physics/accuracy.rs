@@ -5,8 +5,8 @@
 //! Every experiment runs in the lesson's box (320 × 240 px, radius 12, gravity 0.5 px/frame²).
 
 use super::ball::Ball;
+use super::contacts::Grid;
 use super::effects::Effects;
-use super::grid::Grid;
 use super::maths;
 use super::motion::Motion;
 use super::walls::Walls;

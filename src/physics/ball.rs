@@ -7,7 +7,14 @@
 
 use std::collections::VecDeque;
 
+use super::vec2::Vec2;
 use super::walls::Walls;
+
+/// The mass of a ball of `radius` px: balls are flat discs of one density, so mass grows as
+/// the radius squared (the unit cancels in every collision, so none is named).
+pub fn mass(radius: f64) -> f64 {
+    radius * radius
+}
 
 /// One ball, in the lesson's units: pixels and frames.
 #[derive(Clone, Debug, PartialEq)]
@@ -74,6 +81,16 @@ impl Ball {
     pub fn keep_inside(&mut self, walls: &Walls) {
         self.x = self.x.clamp(self.radius, walls.width - self.radius);
         self.y = self.y.clamp(self.radius, walls.height - self.radius);
+    }
+
+    /// The centre, px.
+    pub fn position(&self) -> Vec2 {
+        Vec2::new(self.x, self.y)
+    }
+
+    /// The velocity, px/frame.
+    pub fn velocity(&self) -> Vec2 {
+        Vec2::new(self.vx, self.vy)
     }
 
     /// Whether position and velocity are all finite numbers (a run stops if not).

@@ -4,8 +4,8 @@
 
 use super::ball::Ball;
 use super::effects::Effects;
-use super::exact;
-use super::integrator::{Forces, Integrator};
+use super::integrate::exact;
+use super::integrate::integrator::{Forces, Integrator};
 
 /// How a ball's contact with a wall or floor is resolved.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]

@@ -1,10 +1,18 @@
 //! A scene in motion: the balls and the effects acting on them, advanced one frame at a time.
+//!
+//! A scene that is the lesson's (one semi-implicit Euler step a frame, gravity straight down or
+//! none, clamp-then-reflect walls, nothing else) moves every ball with the lesson's own
+//! [`Ball::step`], so a change to that method shows in every such run. Anything beyond the
+//! lesson picks the solver that handles it.
 
 use super::ball::Ball;
 use super::contacts::ContactSolver;
 use super::effects::Effects;
 use super::events::system::{EventCounts, EventDriven};
+use super::integrate::integrator::Integrator;
 use super::motion::{CollisionMode, Motion};
+use super::walls::Walls;
+use super::work::{tally, Work};
 
 /// The moving state of a scene.
 #[derive(Clone, Debug)]
@@ -12,58 +20,99 @@ pub struct Simulation {
     balls: Vec<Ball>,
     effects: Effects,
     motion: Motion,
-    /// Present only if the scene calls for ball-ball collisions in clamp mode: then it moves
-    /// the balls and solves every contact (it owns the grid).
-    contacts: Option<ContactSolver>,
-    /// Present only if the scene calls for ball-ball collisions in exact mode: then every
-    /// contact is resolved at its moment (`super::events`).
-    events: Option<EventDriven>,
+    stepper: Stepper,
     /// Whether any ball keeps a trail. Without one the pass that records trails is skipped:
     /// at 100,000 balls it reads 8 MB a frame only to find nothing to record.
     trails: bool,
 }
 
+/// What moves the balls each frame: the lesson's step, or the solver the scene calls for.
+#[derive(Clone, Debug)]
+enum Stepper {
+    /// [`Ball::step`] for every ball, which also records its trail.
+    Lesson { gravity: f64, walls: Walls },
+    /// Each ball on its own, by `Motion::step`: any integrator, substeps, drag, floors, exact
+    /// bounces off walls and floors.
+    Apart,
+    /// Ball-ball collisions in clamp mode: the contact solver moves the balls and solves every
+    /// contact (it owns the grid).
+    Contacts(ContactSolver),
+    /// Ball-ball collisions in exact mode: every contact resolved at its moment.
+    Events(EventDriven),
+}
+
+impl Stepper {
+    fn new(effects: &Effects, motion: &Motion, restitution: Option<f64>) -> Stepper {
+        match (restitution, motion.collisions) {
+            (Some(e), CollisionMode::Clamp) => return Stepper::Contacts(ContactSolver::new(e)),
+            (Some(e), CollisionMode::Exact) => return Stepper::Events(EventDriven::new(e)),
+            (None, _) => {}
+        }
+        let gravity = match effects.gravity {
+            None => Some(0.0),
+            Some([gx, gy]) => (gx == 0.0).then_some(gy),
+        };
+        match (gravity, effects.walls) {
+            (Some(gravity), Some(walls))
+                if motion.integrator == Integrator::SemiImplicitEuler
+                    && motion.substeps == 1
+                    && motion.collisions == CollisionMode::Clamp
+                    && effects.drag.is_none()
+                    && effects.floors.is_empty() =>
+            {
+                Stepper::Lesson { gravity, walls }
+            }
+            _ => Stepper::Apart,
+        }
+    }
+}
+
 impl Simulation {
     /// A simulation of `balls` under `effects`, moved by `motion`; `restitution` turns on
     /// ball-ball collisions (and so the broad-phase grid), solved by the contact solver in
-    /// clamp mode.
+    /// clamp mode and event by event in exact mode.
     pub fn new(
         balls: Vec<Ball>,
         effects: Effects,
         motion: Motion,
         restitution: Option<f64>,
     ) -> Simulation {
-        let clamp = motion.collisions == CollisionMode::Clamp;
         let trails = balls.iter().any(|ball| ball.trail.keeps_points());
         Simulation {
+            stepper: Stepper::new(&effects, &motion, restitution),
             balls,
             effects,
             motion,
-            contacts: restitution.filter(|_| clamp).map(ContactSolver::new),
-            events: restitution.filter(|_| !clamp).map(EventDriven::new),
             trails,
         }
     }
 
-    /// Advances every ball by one frame, then the trails record where the balls ended it.
-    /// With ball-ball collisions, clamp mode's contact solver or exact mode's event-driven
-    /// step moves the balls; without them each step (substep) moves every ball on its own.
-    /// The step's forces are worked out once per frame, for all balls.
+    /// Advances every ball by one frame, and the trails record where the balls ended it.
     pub fn step(&mut self) {
-        if let Some(contacts) = &mut self.contacts {
-            // The solver plans its own steps.
-            contacts.step(&mut self.balls, &self.effects, &self.motion);
-        } else {
-            let (steps, forces) = self.motion.plan(&self.effects);
-            if let Some(events) = &mut self.events {
-                let integrator = self.motion.integrator;
-                events.frame(&mut self.balls, integrator, steps, &forces, &self.effects);
-            } else {
+        match &mut self.stepper {
+            Stepper::Lesson { gravity, walls } => {
+                for ball in &mut self.balls {
+                    ball.step(*gravity, walls);
+                }
+                self.tally_lesson_steps();
+                return; // `Ball::step` records the trail
+            }
+            Stepper::Apart => {
+                let (steps, forces) = self.motion.plan(&self.effects);
                 for _ in 0..steps {
                     for ball in &mut self.balls {
                         self.motion.step(ball, &self.effects, &forces);
                     }
                 }
+            }
+            Stepper::Contacts(contacts) => {
+                // The solver plans its own steps.
+                contacts.step(&mut self.balls, &self.effects, &self.motion);
+            }
+            Stepper::Events(events) => {
+                let (steps, forces) = self.motion.plan(&self.effects);
+                let integrator = self.motion.integrator;
+                events.frame(&mut self.balls, integrator, steps, &forces, &self.effects);
             }
         }
         if self.trails {
@@ -73,19 +122,39 @@ impl Simulation {
         }
     }
 
+    /// Counts the lesson's steps, and the gravity and walls they applied (with the
+    /// `work-tally` feature; see `super::work`).
+    fn tally_lesson_steps(&self) {
+        for _ in &self.balls {
+            tally(Work::LessonStep);
+            if self.effects.gravity.is_some() {
+                tally(Work::Gravity);
+            }
+            tally(Work::Walls);
+        }
+    }
+
     /// Whether ball-ball collisions (and so a broad-phase grid) exist in this simulation.
     pub fn has_ball_collisions(&self) -> bool {
-        self.contacts.is_some() || self.events.is_some()
+        matches!(self.stepper, Stepper::Contacts(_) | Stepper::Events(_))
     }
 
     /// Whether the contact solver exists in this simulation.
     pub fn has_contact_solver(&self) -> bool {
-        self.contacts.is_some()
+        matches!(self.stepper, Stepper::Contacts(_))
+    }
+
+    /// Whether every ball takes the lesson's own step, [`Ball::step`].
+    pub fn takes_the_lessons_step(&self) -> bool {
+        matches!(self.stepper, Stepper::Lesson { .. })
     }
 
     /// In exact mode with ball-ball collisions, what the last frame's events were.
     pub fn event_counts(&self) -> Option<EventCounts> {
-        self.events.as_ref().map(EventDriven::counts)
+        match &self.stepper {
+            Stepper::Events(events) => Some(events.counts()),
+            _ => None,
+        }
     }
 
     /// The balls as they are now, in scene order.

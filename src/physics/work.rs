@@ -17,10 +17,12 @@ pub enum Work {
     BallCollisions,
     /// One step of the contact solver over the whole scene (grid, walls, floors, iterations).
     Contacts,
+    /// One ball moved by the lesson's own step, `Ball::step`.
+    LessonStep,
 }
 
 #[cfg(feature = "work-tally")]
-const KINDS: usize = 6;
+const KINDS: usize = 7;
 
 #[cfg(feature = "work-tally")]
 thread_local! {

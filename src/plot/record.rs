@@ -6,7 +6,7 @@
 
 use crate::physics::accuracy::kinetic_energy;
 use crate::physics::ball::Ball;
-use crate::physics::grid::Grid;
+use crate::physics::contacts::Grid;
 use crate::physics::maths;
 use crate::scene::Scene;
 

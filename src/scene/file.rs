@@ -9,9 +9,9 @@ use serde::Deserialize;
 use super::random::Random;
 use super::spec::{BallSpec, InvalidValue, Rgb, Scene, MAX_BALLS};
 use crate::physics::floor::Floor;
-use crate::physics::integrator::Integrator;
 use crate::physics::maths;
 use crate::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
+use crate::physics::Integrator;
 
 /// The bundled presets: name and TOML text, one per lesson exercise.
 pub const PRESETS: &[(&str, &str)] = &[

@@ -1,8 +1,8 @@
 //! Values typed on the command line that replace a scene's own (`--preset moon --damping 1`).
 
 use super::spec::Scene;
-use crate::physics::integrator::Integrator;
 use crate::physics::motion::CollisionMode;
+use crate::physics::Integrator;
 
 /// Each `Some` replaces the scene's value; ball values apply to every ball.
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -152,7 +152,12 @@ impl Scene {
             .iter()
             .map(|b| Ball::new(b.x, b.y, b.vx, b.vy, b.radius, b.trail))
             .collect();
-        let effects = Effects {
+        Simulation::new(balls, self.effects(), self.motion, self.ball_collisions)
+    }
+
+    /// The forces and boundaries the scene names.
+    pub fn effects(&self) -> Effects {
+        Effects {
             gravity: self.gravity,
             drag: self.drag,
             walls: self.walls.map(|damping| Walls {
@@ -161,8 +166,7 @@ impl Scene {
                 damping,
             }),
             floors: self.floors.clone(),
-        };
-        Simulation::new(balls, effects, self.motion, self.ball_collisions)
+        }
     }
 
     /// Checks every value, so the simulation and the encoder never see one they cannot handle.

@@ -2,7 +2,7 @@
 //! another cell.
 //!
 //! Cells are squares at least one largest diameter wide, so two touching balls are always in
-//! the same or neighbouring cells. Unlike the stepped broad phase (`super::super::grid`), balls
+//! the same or neighbouring cells. Unlike the stepped broad phase (`crate::physics::grid`), balls
 //! move between cells in the middle of the step: leaving a cell is an event like any other,
 //! and each cell keeps its balls in a linked list so a move costs O(1) (Rapaport's cell lists).
 //!
@@ -13,12 +13,10 @@
 
 use std::ops::Range;
 
-use super::super::ball::Ball;
-use super::super::poly::Poly;
 use super::lists::Lists;
-
-/// No more than about this many cells per ball: sparse balls get wider cells instead.
-const MAX_CELLS_PER_BALL: f64 = 4.0;
+use crate::physics::ball::Ball;
+use crate::physics::integrate::poly::Poly;
+use crate::physics::tolerances::MAX_CELLS_PER_BALL;
 
 /// Balls in cells, rebuilt at the start of every step into the same buffers.
 #[derive(Clone, Debug, Default)]

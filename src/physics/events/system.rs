@@ -3,8 +3,8 @@
 //! Every ball keeps its own clock (Lubachevsky): it is only moved when an event involves it,
 //! and its state is valid at its clock's time. An event at time `t` moves its one or two balls
 //! from their clocks to `t` along their flights, bounces them, and predicts their next events:
-//! against every ball in the neighbouring cells (`super::super::toi`), against the walls and
-//! floors (`super::super::exact`), and leaving the cell. At the end of the step every ball is
+//! against every ball in the neighbouring cells (`crate::physics::integrate::toi`), against the walls and
+//! floors (`crate::physics::exact`), and leaving the cell. At the end of the step every ball is
 //! flown from its clock to the step's end.
 //!
 //! Two balls bounce at the moment they touch, along the line through their centres at that
@@ -13,7 +13,7 @@
 //!
 //! **Inelastic collapse.** With `e < 1`, balls can collide infinitely often in finite time
 //! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. The
-//! rules below, the first as for walls (`super::super::exact`), make every step finish and a
+//! rules below, the first as for walls (`crate::physics::exact`), make every step finish and a
 //! pile rest:
 //! - **Rest rule.** At the start of each step a ball that touches, without normal speed, a
 //!   wall, a floor or a ball that is itself held, and that gravity presses onto it, is *held*:
@@ -39,32 +39,20 @@
 //!   dropped: nothing overlaps, time is lost (and the Euler methods' gravity kick for the
 //!   dropped time is taken back). [`EventCounts`] reports each such step.
 
-use super::super::ball::Ball;
-use super::super::effects::Effects;
-use super::super::exact::{self, Bounds, Contact, Support, REST_SPEED};
-use super::super::floor::dot;
-use super::super::integrator::{Forces, Integrator};
-use super::super::maths;
-use super::super::poly::Poly;
-use super::super::toi::{self, TOUCH_SPEED};
-use super::super::work::{tally, Work};
 use super::cells::Cells;
 use super::queue::{Event, Queue, What, NOTHING};
-
-/// The most events one step may resolve, per ball.
-pub const MAX_EVENTS_PER_BALL: u64 = 64;
-
-/// The TC model's duration (Luding & McNamara), frames: a ball-ball collision within this
-/// long of either ball's previous one is elastic. Collisions that all happen at one moment
-/// (a ball pressed into a touching row) then pass the momentum along as in Newton's cradle,
-/// a finite number of events, instead of sharing it out in infinitely many smaller ones.
-pub const TC_DURATION: f64 = 1e-6;
-
-/// Gaps between balls below this share of their radii count as touching, for the rest rule.
-const TOUCH_GAP: f64 = 1e-9;
-
-/// The sleep rule's gap: a ball within this share of its radius of a support leans on it.
-const SLEEP_GAP: f64 = 0.01;
+use crate::physics::ball::Ball;
+use crate::physics::effects::Effects;
+use crate::physics::floor::dot;
+use crate::physics::integrate::exact::{self, Bounds, Contact, Support};
+use crate::physics::integrate::integrator::{Forces, Integrator};
+use crate::physics::integrate::poly::Poly;
+use crate::physics::integrate::toi;
+use crate::physics::maths;
+use crate::physics::tolerances::{
+    BALL_TOUCH_GAP, MAX_EVENTS_PER_BALL, REST_SPEED, SLEEP_GAP, TC_DURATION, TOUCH_SPEED,
+};
+use crate::physics::work::{tally, Work};
 
 /// What the event-driven steps of the last frame did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -604,7 +592,7 @@ impl EventDriven {
 /// The normal (from `below` to `ball`) of the contact `ball` rests on `below` through, if it
 /// touches it with no normal speed between them and gravity presses it on.
 fn resting_on(ball: &Ball, below: &Ball, forces: &Forces) -> Option<[f64; 2]> {
-    let n = leaning_on(ball, below, TOUCH_GAP)?;
+    let n = leaning_on(ball, below, BALL_TOUCH_GAP)?;
     let still = dot([ball.vx - below.vx, ball.vy - below.vy], n).abs() <= TOUCH_SPEED;
     (still && exact::pressed(forces, n)).then_some(n)
 }

@@ -45,45 +45,20 @@
 
 use std::ops::Range;
 
-use super::ball::Ball;
-use super::effects::Effects;
-use super::exact::REST_SPEED;
 use super::grid::Grid;
-use super::integrator::{Forces, Movable};
-use super::maths;
-use super::motion::Motion;
-use super::walls::Walls;
-use super::work::{tally, Work};
-
-/// The gravity [`REST_SPEED`] was derived for, px/frame²: the rest speed scales with gravity,
-/// so a scene without gravity has none and every approach bounces.
-const LESSON_GRAVITY: f64 = 0.5;
+use crate::physics::ball::Ball;
+use crate::physics::effects::Effects;
+use crate::physics::integrate::integrator::{Forces, Movable};
+use crate::physics::maths;
+use crate::physics::motion::Motion;
+use crate::physics::tolerances::{
+    LESSON_GRAVITY, MAX_PAIRS_PER_BALL, PAIR_MARGIN, PUSH, REST_SPEED, SLOP, TOUCHES_PER_CONTACT,
+};
+use crate::physics::walls::Walls;
+use crate::physics::work::{tally, Work};
 
 /// The golden angle, radians: successive multiples of it spread evenly round a circle.
 const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;
-
-/// Contacts are found this share of a radius before they could touch within the step, so a
-/// resting contact keeps its warm start from step to step.
-const PAIR_MARGIN: f64 = 0.1;
-
-/// Overlap the position pass leaves alone, as a share of the radius: correcting every last
-/// bit of it moves resting balls every step, and they never come to rest (Box2D's "linear
-/// slop" plays this part).
-pub const SLOP: f64 = 0.005;
-
-/// The most ball-ball contacts a step takes on, per ball. A pile of equal balls touches at
-/// most six neighbours each; balls spawned on top of one another could make N² pairs, and
-/// the memory for them. Pairs beyond this wait for a later step, once the pile has spread.
-pub const MAX_PAIRS_PER_BALL: usize = 16;
-
-/// How many touches per contact an island without forces may take, solved one by one at
-/// their times, before it is solved in sub-steps instead: a chain of balls passes a blow
-/// along in a few touches; more means a cluster that keeps colliding.
-const TOUCHES_PER_CONTACT: usize = 4;
-
-/// Share of the overlap beyond the slop the position pass removes each sub-step (Box2D's
-/// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
-const PUSH: f64 = 0.2;
 
 /// A ball as the solver moves it: centre, velocity and radius, without the trail (which
 /// the solver never reads), so its copy of the balls in grid order is all it sweeps.

@@ -10,11 +10,11 @@
 //! a kick after. The Euler methods put all of gravity and drag into one kick and fly in a
 //! straight line; velocity Verlet and RK4 have no kicks and fly along a curve.
 
-use super::ball::Ball;
-use super::effects::Effects;
-use super::maths;
 use super::poly::Poly;
-use super::work::{tally, Work};
+use crate::physics::ball::Ball;
+use crate::physics::effects::Effects;
+use crate::physics::maths;
+use crate::physics::work::{tally, Work};
 
 /// What the integrators move: a centre and a velocity. A [`Ball`] is one; the contact solver
 /// moves a compact copy of its balls, without their trails (`super::contacts::Body`).

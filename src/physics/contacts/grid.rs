@@ -9,12 +9,9 @@
 
 use std::ops::Range;
 
-use super::ball::Ball;
-use super::maths;
-
-/// The grid never has more than about this many cells per ball: when balls are spread thin
-/// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).
-const MAX_CELLS_PER_BALL: f64 = 4.0;
+use crate::physics::ball::Ball;
+use crate::physics::maths;
+use crate::physics::tolerances::MAX_CELLS_PER_BALL;
 
 /// A ball as the grid sees it: where it is and how big. Copied out of the balls so the pair
 /// search reads one compact array in cell order.

@@ -24,25 +24,15 @@
 //!   stays where the last bounce left it, touching and never inside. [`step`] returns whether
 //!   that happened, so callers can report it.
 
-use super::ball::Ball;
-use super::effects::Effects;
-use super::floor::{dot, sub, Floor};
 use super::integrator::{Forces, Integrator};
-use super::maths;
 use super::poly::Poly;
-use super::toi::{self, TOUCH_SPEED};
-use super::walls::Walls;
-
-/// Rebound speed below which a bounce ends in rest, px/frame.
-///
-/// Box2D and Rapier stop bouncing below 1 m/s. This program has no metres, but its gravity
-/// fixes a scale: if the lesson's 0.5 px/frame² at 30 ms a frame is Earth's 9.81 m/s², then
-/// 1 m = 0.5 / (9.81 · 0.03²) = 56.6 px and 1 m/s = 56.6 · 0.03 = 1.7 px/frame. Such a rebound
-/// rises v²/2g = 2.9 px (5 cm) and lasts 2v/g = 6.8 frames (0.2 s).
-pub const REST_SPEED: f64 = 1.7;
-
-/// The most bounces resolved exactly in one step.
-pub const MAX_EVENTS_PER_STEP: u32 = 64;
+use super::toi;
+use crate::physics::ball::Ball;
+use crate::physics::effects::Effects;
+use crate::physics::floor::{dot, sub, Floor};
+use crate::physics::maths;
+use crate::physics::tolerances::{FLOOR_TOUCH_GAP, MAX_EVENTS_PER_STEP, REST_SPEED, TOUCH_SPEED};
+use crate::physics::walls::Walls;
 
 /// One wall of the box, seen from a ball of a given radius.
 #[derive(Clone, Copy, Debug)]
@@ -380,9 +370,6 @@ impl<'a> Bounds<'a> {
     }
 }
 
-/// Normal distances below this share of the radius count as touching a floor's face.
-const TOUCH_GAP: f64 = 1e-9;
-
 /// The signed distance of the flight's centre from the floor's line, along its normal.
 fn line_distance(floor: &Floor, path: &[Poly; 2]) -> Poly {
     let n = floor.normal();
@@ -399,7 +386,8 @@ fn on_segment(floor: &Floor, point: [f64; 2]) -> bool {
 
 /// The normal of the floor's face `ball` rests on, if it touches the face with no normal speed.
 fn resting_on_face(floor: &Floor, ball: &Ball) -> Option<[f64; 2]> {
-    face_within(floor, ball, TOUCH_GAP).filter(|&n| dot(velocity(ball), n).abs() <= TOUCH_SPEED)
+    face_within(floor, ball, FLOOR_TOUCH_GAP)
+        .filter(|&n| dot(velocity(ball), n).abs() <= TOUCH_SPEED)
 }
 
 /// The normal (pointing at the ball) of the floor's face, if `ball` is within `gap` (a share

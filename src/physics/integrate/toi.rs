@@ -16,14 +16,7 @@
 //! sliding against the other), so rounding can never make it collide again and again.
 
 use super::poly::Poly;
-
-/// Normal speeds below this, px/frame, count as touching without approaching: rounding
-/// after a bounce leaves about 1e-16 px/frame, a real approach is many orders more.
-pub const TOUCH_SPEED: f64 = 1e-9;
-
-/// How far (as a share of the squared reach) a touching pair on curved flights may close
-/// before it counts as meeting again: well above rounding, far below a visible overlap.
-const REBOUND_GAP: f64 = 1e-9;
+use crate::physics::tolerances::{REBOUND_GAP, TOUCH_SPEED};
 
 /// The first time in `[0, end]` at which two centres whose offset (second minus first) moves
 /// as `relative` come within `reach` of each other while approaching, if they do.

@@ -1,0 +1,84 @@
+//! Every tolerance and limit of the solvers in one place, each with its unit and the reason
+//! for its value, as Box2D keeps them in `constants.h`. Units are the lesson's: pixels and
+//! frames. The lesson's own step (`super::ball::Ball::step`) needs none of them: it compares
+//! with the walls exactly.
+
+// ---- Scale ----
+
+/// The gravity the speeds below were derived for, px/frame²: the lesson's. With it at 30 ms a
+/// frame standing for Earth's 9.81 m/s², 1 m = 0.5 / (9.81 · 0.03²) = 56.6 px and
+/// 1 m/s = 56.6 · 0.03 = 1.7 px/frame. Speeds that stand for m/s scale with a scene's gravity.
+pub const LESSON_GRAVITY: f64 = 0.5;
+
+/// Rebound speed below which a bounce ends in rest, px/frame (at [`LESSON_GRAVITY`]).
+///
+/// Box2D and Rapier stop bouncing below 1 m/s, which is 1.7 px/frame at the lesson's scale.
+/// Such a rebound rises v²/2g = 2.9 px (5 cm) and lasts 2v/g = 6.8 frames (0.2 s).
+pub const REST_SPEED: f64 = 1.7;
+
+// ---- Touching, against rounding ----
+
+/// Normal speeds below this, px/frame, count as touching without approaching: rounding
+/// after a bounce leaves about 1e-16 px/frame, a real approach is many orders more.
+pub const TOUCH_SPEED: f64 = 1e-9;
+
+/// How far (as a share of the squared reach) a touching pair on curved flights may close
+/// before it counts as meeting again: well above rounding, far below a visible overlap.
+pub const REBOUND_GAP: f64 = 1e-9;
+
+/// Normal distances below this share of the radius count as touching a floor's face (exact
+/// mode's walls and floors): rounding leaves about 1e-16 of a radius.
+pub const FLOOR_TOUCH_GAP: f64 = 1e-9;
+
+/// Gaps between balls below this share of their radii count as touching, for exact mode's
+/// rest rule: as for floors, far above rounding and far below a pixel.
+pub const BALL_TOUCH_GAP: f64 = 1e-9;
+
+// ---- Exact mode's ball-ball events ----
+
+/// The TC model's duration (Luding & McNamara), frames: a ball-ball collision within this
+/// long of either ball's previous one is elastic. Collisions that all happen at one moment
+/// (a ball pressed into a touching row) then pass the momentum along as in Newton's cradle,
+/// a finite number of events, instead of sharing it out in infinitely many smaller ones.
+pub const TC_DURATION: f64 = 1e-6;
+
+/// The sleep rule's gap: a ball within this share of its radius of a support leans on it.
+/// A hundredth of a radius is below a pixel for any ball the canvas can show.
+pub const SLEEP_GAP: f64 = 0.01;
+
+// ---- The contact solver (clamp mode) ----
+
+/// Contacts are found this share of a radius before they could touch within the step, so a
+/// resting contact keeps its warm start from step to step.
+pub const PAIR_MARGIN: f64 = 0.1;
+
+/// Overlap the position pass leaves alone, as a share of the radius: correcting every last
+/// bit of it moves resting balls every step, and they never come to rest (Box2D's "linear
+/// slop" plays this part).
+pub const SLOP: f64 = 0.005;
+
+/// Share of the overlap beyond the slop the position pass removes each sub-step (Box2D's
+/// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
+pub const PUSH: f64 = 0.2;
+
+// ---- Limits: work and memory bounded whatever the scene ----
+
+/// The most bounces resolved exactly in one step of one ball (walls and floors).
+pub const MAX_EVENTS_PER_STEP: u32 = 64;
+
+/// The most events one exact step may resolve, per ball.
+pub const MAX_EVENTS_PER_BALL: u64 = 64;
+
+/// The most ball-ball contacts a step takes on, per ball. A pile of equal balls touches at
+/// most six neighbours each; balls spawned on top of one another could make N² pairs, and
+/// the memory for them. Pairs beyond this wait for a later step, once the pile has spread.
+pub const MAX_PAIRS_PER_BALL: usize = 16;
+
+/// How many touches per contact an island without forces may take, solved one by one at
+/// their times, before it is solved in sub-steps instead: a chain of balls passes a blow
+/// along in a few touches; more means a cluster that keeps colliding.
+pub const TOUCHES_PER_CONTACT: usize = 4;
+
+/// A grid never has more than about this many cells per ball: when balls are spread thin
+/// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).
+pub const MAX_CELLS_PER_BALL: f64 = 4.0;
