@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-/// The targets: at least this many times faster, and at most this share of the bytes.
+/// What the project aims for: at least this many times faster, and at most this share of the bytes.
 const TARGET_SPEEDUP: f64 = 50.0;
 const TARGET_SIZE_SHARE: f64 = 0.85;
 

@@ -6,10 +6,11 @@
 //! `StarterBall::step` until it reports a match. When your ball differs, it says at which
 //! frame, shows the values, and names the lesson's pitfall the difference looks like.
 
-use std::fs::File;
 use std::io::BufWriter;
+use std::path::Path;
 
 use bouncing_ball::gif::GifWriter;
+use bouncing_ball::output::{commit_all, AtomicFile};
 use bouncing_ball::physics::{Ball, Trail, Walls};
 use bouncing_ball::render::Renderer;
 use bouncing_ball::{BallSpec, Scene};
@@ -189,7 +190,10 @@ fn diagnose(before: &Ball, yours: &Ball, library: &Ball) -> Option<&'static str>
 fn main() -> std::io::Result<()> {
     let scene = scene();
     let renderer = Renderer::new(&scene).expect("the lesson's colours fit a GIF");
-    let out = BufWriter::new(File::create("starter.gif")?);
+    // Written to a temporary file and renamed into place at the end, so a failed or
+    // interrupted run never leaves half a GIF (or clobbers the last good one).
+    let mut file = AtomicFile::create(Path::new("starter.gif")).map_err(std::io::Error::other)?;
+    let out = BufWriter::new(file.file());
     let mut gif = GifWriter::new(
         out,
         WIDTH as u16,
@@ -225,7 +229,8 @@ fn main() -> std::io::Result<()> {
         renderer.draw(&[mine], &mut frame);
         gif.write_frame(&frame)?;
     }
-    gif.finish()?;
+    gif.finish()?.into_inner().map_err(|e| e.into_error())?;
+    commit_all(vec![file]).map_err(std::io::Error::other)?;
     println!("wrote starter.gif ({FRAMES} frames)");
 
     match first_difference {

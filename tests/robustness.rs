@@ -548,7 +548,7 @@ fn a_scene_on_standard_input_runs() {
 }
 
 #[test]
-fn unclear_messages_now_say_what_is_wrong_in_one_line() {
+fn a_bad_scene_file_or_value_is_named_in_one_line() {
     let dir = OddFolder::new();
     std::fs::write(dir.path().join("no-height.toml"), "width = 320\n").unwrap();
     std::fs::write(

@@ -191,7 +191,7 @@ fn an_effect_the_scene_does_not_call_for_never_runs() {
 
 #[test]
 fn a_scene_without_ball_collisions_never_builds_the_grid_or_the_contact_solver() {
-    // The grid lives inside `Collisions` or the contact solver, which exist only when the
+    // The grid lives inside the contact solver or the event-driven step, which exist only when the
     // scene asks for ball-ball collisions.
     for (name, _) in PRESETS {
         let scene = scene_file::preset(name, 1).unwrap();

@@ -237,6 +237,9 @@ def main():
     sub.add_parser("bless")
     a = p.parse_args()
     if a.command == "gif":
+        if not a.out.is_dir():
+            p.error(f"gif: {a.out} is not a folder; give the folder to write "
+                    "bouncing_ball.gif and bouncing_ball.png into")
         write_gif(constants(a.scene), a.out)
     elif a.command == "trajectory":
         print_trajectory(constants(a.scene))

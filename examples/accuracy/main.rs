@@ -232,7 +232,13 @@ fn plot_cost(rows: &[Row], path: &Path) -> Result<(), OutputError> {
 fn main() -> Result<(), Box<dyn Error>> {
     let folder = match std::env::args_os().nth(1) {
         Some(folder) => PathBuf::from(folder),
-        None => Path::new(env!("CARGO_MANIFEST_DIR")).join("target/accuracy"),
+        // Beside this example's binary, in whatever target folder cargo uses
+        // (`CARGO_TARGET_DIR` included): TARGET/release/examples/accuracy → TARGET/accuracy.
+        None => std::env::current_exe()?
+            .ancestors()
+            .nth(3)
+            .ok_or("the example runs from the target folder")?
+            .join("accuracy"),
     };
     std::fs::create_dir_all(&folder)?;
     let started = Instant::now();
