@@ -1,0 +1,90 @@
+//! Docs that cannot go stale: what `docs/` says the program accepts is checked against the
+//! program itself.
+
+use std::path::Path;
+
+use bouncing_ball::scene::file as scene_file;
+
+fn doc(name: &str) -> String {
+    std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("docs")
+            .join(name),
+    )
+    .unwrap()
+}
+
+/// The keys the parser allows in one place of a scene file, read from its own message for an
+/// unknown key (`… the keys allowed here are `a`, `b``), so the list is the parser's.
+fn allowed_keys(scene: &str) -> Vec<String> {
+    let error = scene_file::parse("probe.toml", scene, 1)
+        .expect_err("an unknown key is refused")
+        .to_string();
+    let list = error
+        .split("the keys allowed here are ")
+        .nth(1)
+        .unwrap_or_else(|| panic!("no list of keys in {error:?}"));
+    list.split(", ")
+        .map(|key| key.trim().trim_matches('`').to_string())
+        .collect()
+}
+
+#[test]
+fn the_scene_file_page_shows_every_key_the_parser_accepts() {
+    let page = doc("scene-files.md");
+    let size = "width = 320\nheight = 240\n";
+    let places = [
+        ("the top level", format!("{size}zzz = 1\n")),
+        ("[[balls]]", format!("{size}[[balls]]\nzzz = 1\n")),
+        ("[spawn]", format!("{size}[spawn]\nzzz = 1\n")),
+        ("[[floors]]", format!("{size}[[floors]]\nzzz = 1\n")),
+        ("walls", format!("{size}walls = {{ zzz = 1 }}\n")),
+        (
+            "ball_collisions",
+            format!("{size}ball_collisions = {{ zzz = 1 }}\n"),
+        ),
+    ];
+    for (place, scene) in places {
+        let keys = allowed_keys(&scene);
+        assert!(!keys.is_empty(), "{place}: no keys read");
+        for key in keys {
+            let shown = [
+                format!("{key} = "),
+                format!("[{key}]"),
+                format!("[[{key}]]"),
+            ];
+            assert!(
+                shown.iter().any(|form| page.contains(form.as_str())),
+                "docs/scene-files.md does not show the key `{key}` ({place}); add it to the example"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_gif_page_quotes_the_size_of_every_preset_gif_as_it_is() {
+    let page = doc("gif.md");
+    let mut checked = 0;
+    for (name, _) in scene_file::PRESETS {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.gif"));
+        let size = std::fs::metadata(&path).unwrap().len();
+        let row = page
+            .lines()
+            .find(|line| line.starts_with(&format!("| {name} |")))
+            .unwrap_or_else(|| panic!("docs/gif.md has no row for the preset {name}"));
+        let quoted: u64 = row
+            .split('|')
+            .nth(2)
+            .unwrap()
+            .trim()
+            .replace(',', "")
+            .parse()
+            .unwrap();
+        assert_eq!(
+            quoted, size,
+            "docs/gif.md quotes {quoted} B for {name}, scenes/{name}.gif is {size} B: re-run `cargo run --release --example gif_size` and update the table"
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, scene_file::PRESETS.len());
+}
