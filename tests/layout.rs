@@ -219,6 +219,40 @@ fn every_stage_is_a_folder_whose_mod_rs_says_what_it_owns() {
     }
 }
 
+/// The lesson's own modules, and the folders of the solvers beyond it.
+const LESSON: [&str; 3] = ["physics::ball", "physics::walls", "physics::floor"];
+const SOLVERS: [&str; 3] = ["physics::integrate", "physics::contacts", "physics::events"];
+
+#[test]
+fn the_lesson_knows_no_solver() {
+    let graph = graph();
+    for lesson in LESSON {
+        for other in &graph[lesson] {
+            assert!(
+                !SOLVERS.iter().any(|solver| other.starts_with(solver)),
+                "{lesson} imports {other}: the lesson's state must not know the solvers beyond it"
+            );
+        }
+    }
+}
+
+#[test]
+fn each_solver_is_a_folder_that_says_what_it_adds_to_the_lesson_and_when_a_scene_needs_it() {
+    let all = modules();
+    for solver in SOLVERS {
+        let doc: String = all
+            .get(solver)
+            .unwrap_or_else(|| panic!("{solver} should be a folder with a mod.rs"))
+            .lines()
+            .take_while(|line| line.starts_with("//!"))
+            .collect();
+        assert!(
+            doc.contains("lesson") && doc.contains("scene needs"),
+            "the //! of {solver}/mod.rs should say what it adds to the lesson and when a scene needs it"
+        );
+    }
+}
+
 /// The platform's maths library rounds these differently on each system (see
 /// `src/physics/maths.rs`); the program calls them only through that module.
 const PLATFORM_MATHS: [&str; 13] = [
