@@ -1,6 +1,8 @@
-//! Side by side with the lesson's Python script: the release binary and `tools/lesson.py gif`
-//! (the project's rendition of the lesson's script, drawing with Pillow) render the same
-//! default scene, runs interleaved so both see the same machine, whole process each time.
+//! Side by side with the lesson's Python script: the release binary and the script (drawing
+//! with Pillow) render the same default scene, runs interleaved so both see the same machine,
+//! whole process each time. The script is the lesson's reference,
+//! `../shared/reference/lesson_reference.py` beside the checkout, where it is there, and the
+//! project's own rendition, `tools/lesson.py gif`, otherwise; the table says which ran.
 //! Prints the median and fastest wall time of each, the speed ratio, and both GIFs' sizes.
 //!
 //! Run: `cargo run --release --example bench_vs_python -- [RUNS]` (RUNS defaults to 11; it
@@ -69,6 +71,23 @@ fn our_binary() -> PathBuf {
     release.join(format!("bouncing_ball{}", std::env::consts::EXE_SUFFIX))
 }
 
+/// The script to time, its name in the table and the arguments before the output folder:
+/// the lesson's reference script where it is there (it is the faster of the two, drawing
+/// without the rendition's scene-file support), the project's rendition otherwise.
+fn python_script() -> (PathBuf, &'static str, &'static [&'static str]) {
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let reference = manifest.join("../shared/reference/lesson_reference.py");
+    if reference.exists() {
+        (reference, "Python + Pillow (lesson_reference.py)", &[])
+    } else {
+        (
+            manifest.join("tools/lesson.py"),
+            "Python + Pillow (tools/lesson.py)",
+            &["gif"],
+        )
+    }
+}
+
 /// Why the Python side cannot run here, if it cannot.
 fn python_missing(script: &Path) -> Option<String> {
     if !script.exists() {
@@ -93,7 +112,7 @@ fn main() {
         .map(|s| s.parse().expect("RUNS is a whole number"))
         .unwrap_or(11);
     let binary = our_binary();
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tools/lesson.py");
+    let (script, name, args) = python_script();
 
     let mut contenders = vec![Contender {
         name: "Rust (this crate, release)",
@@ -108,10 +127,10 @@ fn main() {
     match python_missing(&script) {
         Some(why) => println!("Skipping the Python side: {why}.\n"),
         None => contenders.push(Contender {
-            name: "Python + Pillow (lesson.py)",
+            name,
             command: Box::new(move |dir| {
                 let mut c = Command::new("python3");
-                c.arg(&script).arg("gif").arg(dir);
+                c.arg(&script).args(args).arg(dir);
                 c
             }),
             times: Vec::new(),
