@@ -228,7 +228,9 @@ impl BareGas {
                     other.y + other.vy * behind - ball.y,
                 ];
                 let velocity = [other.vx - ball.vx, other.vy - ball.vy];
-                if let Some(time) = toi::straight(offset, velocity, 2.0 * RADIUS, first.0) {
+                if let Some(time) =
+                    toi::straight(offset.into(), velocity.into(), 2.0 * RADIUS, first.0)
+                {
                     *first = (time, j);
                 }
             }

@@ -4,7 +4,7 @@
 //!
 //! Every experiment runs in the lesson's box (320 × 240 px, radius 12, gravity 0.5 px/frame²).
 
-use super::ball::Ball;
+use super::ball::{mass, Ball};
 use super::contacts::Grid;
 use super::effects::Effects;
 use super::maths;
@@ -113,7 +113,7 @@ pub fn bounces(motion: Motion, damping: f64, y0: f64, vy0: f64, frames: u64) -> 
 
 /// Mechanical energy per unit mass, px²/frame², with the floor's contact line as zero height.
 pub fn energy(ball: &Ball) -> f64 {
-    (ball.vx * ball.vx + ball.vy * ball.vy) / 2.0 + GRAVITY * (FLOOR - ball.y)
+    ball.velocity().length_squared() / 2.0 + GRAVITY * (FLOOR - ball.y)
 }
 
 /// The elastic experiment: the lesson's ball with damping 1 for `frames` frames; the relative
@@ -163,16 +163,16 @@ pub fn pile_height(balls: &[Ball], floor: f64) -> f64 {
 
 /// Root-mean-square speed of `balls`, px/frame: how far a heap is from rest.
 pub fn rms_speed(balls: &[Ball]) -> f64 {
-    let sum: f64 = balls.iter().map(|b| b.vx * b.vx + b.vy * b.vy).sum();
+    let sum: f64 = balls.iter().map(|b| b.velocity().length_squared()).sum();
     (sum / balls.len().max(1) as f64).sqrt()
 }
 
-/// Total kinetic energy, `Σ ½·m·|v|²` with masses ∝ radius² (flat discs of equal density):
+/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' [`mass`] (flat discs of equal density):
 /// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
 pub fn kinetic_energy(balls: &[Ball]) -> f64 {
     balls
         .iter()
-        .map(|b| 0.5 * b.radius * b.radius * (b.vx * b.vx + b.vy * b.vy))
+        .map(|b| 0.5 * mass(b.radius) * b.velocity().length_squared())
         .sum()
 }
 

@@ -4,7 +4,7 @@
 //! flip the normal component of its velocity with damping, keep the tangential one.
 
 use super::ball::Ball;
-use super::maths;
+use super::vec2::Vec2;
 
 /// A line segment from `from` to `to` (px) and the share of normal speed a bounce keeps.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -14,46 +14,48 @@ pub struct Floor {
     pub damping: f64,
 }
 
-/// `a − b`.
-pub fn sub(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
-    [a[0] - b[0], a[1] - b[1]]
-}
-
-/// `a · b`.
-pub fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
-    a[0] * b[0] + a[1] * b[1]
+/// `offset / length`, component by component: the direction of `offset` when `length` is its
+/// length. (A division each, not a multiplication by `1 / length`, which rounds otherwise.)
+pub fn unit(offset: Vec2, length: f64) -> Vec2 {
+    Vec2::new(offset.x / length, offset.y / length)
 }
 
 impl Floor {
+    /// The end points `from` and `to`.
+    pub fn ends(&self) -> [Vec2; 2] {
+        [Vec2::from(self.from), Vec2::from(self.to)]
+    }
+
     /// The unit normal (left of `from → to`); which side a ball is on is the sign along it.
-    pub fn normal(&self) -> [f64; 2] {
-        let [dx, dy] = sub(self.to, self.from);
-        let length = maths::hypot(dx, dy);
-        [dy / length, -dx / length]
+    pub fn normal(&self) -> Vec2 {
+        let [from, to] = self.ends();
+        let d = to - from;
+        unit(-d.perp(), d.length())
     }
 
     /// Where along the segment the point's projection falls: 0 at `from`, 1 at `to`.
-    pub fn along(&self, point: [f64; 2]) -> f64 {
-        let d = sub(self.to, self.from);
-        dot(sub(point, self.from), d) / dot(d, d)
+    pub fn along(&self, point: Vec2) -> f64 {
+        let [from, to] = self.ends();
+        let d = to - from;
+        (point - from).dot(d) / d.length_squared()
     }
 
     /// The unit normal from the segment towards `centre` and how far the centre is from the
     /// segment (its nearest point, which may be an end). A centre on the segment gets the
     /// face's normal. The contact solver builds its floor contacts from this.
     pub fn nearest(&self, centre: [f64; 2]) -> ([f64; 2], f64) {
+        let centre = Vec2::from(centre);
         let t = self.along(centre).clamp(0.0, 1.0);
-        let point = [
-            self.from[0] + t * (self.to[0] - self.from[0]),
-            self.from[1] + t * (self.to[1] - self.from[1]),
-        ];
-        let offset = sub(centre, point);
-        let distance = maths::hypot(offset[0], offset[1]);
-        if distance > 0.0 {
-            ([offset[0] / distance, offset[1] / distance], distance)
+        let [from, to] = self.ends();
+        let point = from + t * (to - from);
+        let offset = centre - point;
+        let distance = offset.length();
+        let normal = if distance > 0.0 {
+            unit(offset, distance)
         } else {
-            (self.normal(), 0.0)
-        }
+            self.normal()
+        };
+        (normal.to_array(), distance)
     }
 
     /// Resolves contact for a ball that moved from centre `from` to its current centre this step.
@@ -62,10 +64,10 @@ impl Floor {
     /// frame), it is put back on the side it came from. Otherwise a ball overlapping an end
     /// point bounces off it as off a point.
     pub fn bounce(&self, ball: &mut Ball, from: [f64; 2]) {
-        let normal = self.normal();
-        let now = [ball.x, ball.y];
-        let before = dot(sub(from, self.from), normal);
-        let after = dot(sub(now, self.from), normal);
+        let (from, now) = (Vec2::from(from), ball.position());
+        let (start, normal) = (Vec2::from(self.from), self.normal());
+        let before = (from - start).dot(normal);
+        let after = (now - start).dot(normal);
         // The side the ball came from; distances below are measured towards that side.
         let side = if before != 0.0 {
             before.signum()
@@ -77,16 +79,12 @@ impl Floor {
             // Where the path first touched the face's line (or now, if it started touching).
             let contact = if before > ball.radius {
                 let t = (before - ball.radius) / (before - after);
-                [
-                    from[0] + t * (now[0] - from[0]),
-                    from[1] + t * (now[1] - from[1]),
-                ]
+                from + t * (now - from)
             } else {
                 now
             };
             if (0.0..=1.0).contains(&self.along(contact)) {
-                let n = [normal[0] * side, normal[1] * side];
-                self.resolve(ball, n, ball.radius - after);
+                self.resolve(ball, normal * side, ball.radius - after);
                 return;
             }
         }
@@ -96,30 +94,30 @@ impl Floor {
     /// A ball overlapping the nearer end point is pushed out and reflected about the line
     /// from that point to its centre.
     fn bounce_off_end(&self, ball: &mut Ball) {
-        let end = if self.along([ball.x, ball.y]) < 0.5 {
-            self.from
+        let [from, to] = self.ends();
+        let end = if self.along(ball.position()) < 0.5 {
+            from
         } else {
-            self.to
+            to
         };
-        let offset = sub([ball.x, ball.y], end);
-        let distance = maths::hypot(offset[0], offset[1]);
+        let offset = ball.position() - end;
+        let distance = offset.length();
         if distance >= ball.radius || distance == 0.0 {
             return;
         }
-        let n = [offset[0] / distance, offset[1] / distance];
-        self.resolve(ball, n, ball.radius - distance);
+        self.resolve(ball, unit(offset, distance), ball.radius - distance);
     }
 
     /// Moves the ball `depth` along `n` and, if it is moving into the floor, reflects the
     /// normal component of its velocity with damping.
-    fn resolve(&self, ball: &mut Ball, n: [f64; 2], depth: f64) {
-        ball.x += n[0] * depth;
-        ball.y += n[1] * depth;
-        let normal_speed = ball.vx * n[0] + ball.vy * n[1];
+    fn resolve(&self, ball: &mut Ball, n: Vec2, depth: f64) {
+        let position = ball.position() + n * depth;
+        (ball.x, ball.y) = (position.x, position.y);
+        let normal_speed = ball.velocity().dot(n);
         if normal_speed < 0.0 {
             let change = (1.0 + self.damping) * normal_speed;
-            ball.vx -= change * n[0];
-            ball.vy -= change * n[1];
+            let velocity = ball.velocity() - change * n;
+            (ball.vx, ball.vy) = (velocity.x, velocity.y);
         }
     }
 }

@@ -2,9 +2,10 @@
 //! another cell.
 //!
 //! Cells are squares at least one largest diameter wide, so two touching balls are always in
-//! the same or neighbouring cells. Unlike the stepped broad phase (`crate::physics::grid`), balls
-//! move between cells in the middle of the step: leaving a cell is an event like any other,
-//! and each cell keeps its balls in a linked list so a move costs O(1) (Rapaport's cell lists).
+//! the same or neighbouring cells. Unlike the stepped broad phase
+//! (`crate::physics::contacts::Grid`), balls move between cells in the middle of the step:
+//! leaving a cell is an event like any other, and each cell keeps its balls in a linked list
+//! so a move costs O(1) (Rapaport's cell lists).
 //!
 //! A ball changes cell only once it is a hair (`margin`) past the border, and the cells are
 //! widened by twice that, so rounding can neither make a ball hop back and forth across a
@@ -186,5 +187,5 @@ fn crossing(path: &Poly, border: f64, towards: i8, left: f64) -> Option<f64> {
         return (time <= left).then_some(time);
     }
     // The distance to the far side of the border, which falls below zero on passing it.
-    path.scale(-side).plus(side * border).first_negative(left)
+    (*path * -side + side * border).first_negative(left)
 }

@@ -3,9 +3,9 @@
 //! Every ball keeps its own clock (Lubachevsky): it is only moved when an event involves it,
 //! and its state is valid at its clock's time. An event at time `t` moves its one or two balls
 //! from their clocks to `t` along their flights, bounces them, and predicts their next events:
-//! against every ball in the neighbouring cells (`crate::physics::integrate::toi`), against the walls and
-//! floors (`crate::physics::exact`), and leaving the cell. At the end of the step every ball is
-//! flown from its clock to the step's end.
+//! against every ball in the neighbouring cells (`crate::physics::integrate::toi`), against the
+//! walls and floors (`crate::physics::integrate::exact`), and leaving the cell. At the end of
+//! the step every ball is flown from its clock to the step's end.
 //!
 //! Two balls bounce at the moment they touch, along the line through their centres at that
 //! moment, with masses ∝ radius² and the scene's restitution `e`: the relative normal speed
@@ -13,12 +13,12 @@
 //!
 //! **Inelastic collapse.** With `e < 1`, balls can collide infinitely often in finite time
 //! (McNamara & Young): three balls in a row, or a ball pressed onto a resting pile. The
-//! rules below, the first as for walls (`crate::physics::exact`), make every step finish and a
-//! pile rest:
+//! rules below, the first as for walls (`crate::physics::integrate::exact`), make every step
+//! finish and a pile rest:
 //! - **Rest rule.** At the start of each step a ball that touches, without normal speed, a
 //!   wall, a floor or a ball that is itself held, and that gravity presses onto it, is *held*:
 //!   that part of gravity is removed from its step, as the wall's rest rule does. A collision
-//!   with `e < 1` whose rebound would be slower than `exact::REST_SPEED`, of a ball that
+//!   with `e < 1` whose rebound would be slower than [`REST_SPEED`], of a ball that
 //!   gravity presses onto a held ball, ends with the falling ball at rest on the held one, as
 //!   on a wall (the held ball is not pushed: what holds it takes the impulse). Without this a
 //!   ball landing on a resting pile would bounce between pile and ball in ever smaller steps,
@@ -29,7 +29,7 @@
 //!   pushes along their normals alone can balance gravity) sleeps: it stops, and for the step
 //!   it is a fixed obstacle. Balls may hold each other up, so the sleepers are the largest
 //!   set of slow balls that holds itself up. Struck so hard that the rebound reaches
-//!   `exact::REST_SPEED`, it wakes and collides as usual. A settled pile sleeps whole and
+//!   [`REST_SPEED`], it wakes and collides as usual. A settled pile sleeps whole and
 //!   has no events at all.
 //! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
 //!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
@@ -41,17 +41,17 @@
 
 use super::cells::Cells;
 use super::queue::{Event, Queue, What, NOTHING};
-use crate::physics::ball::Ball;
+use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
-use crate::physics::floor::dot;
+use crate::physics::floor::unit;
 use crate::physics::integrate::exact::{self, Bounds, Contact, Support};
 use crate::physics::integrate::integrator::{Forces, Integrator};
 use crate::physics::integrate::poly::Poly;
 use crate::physics::integrate::toi;
-use crate::physics::maths;
 use crate::physics::tolerances::{
     BALL_TOUCH_GAP, MAX_EVENTS_PER_BALL, REST_SPEED, SLEEP_GAP, TC_DURATION, TOUCH_SPEED,
 };
+use crate::physics::vec2::Vec2;
 use crate::physics::work::{tally, Work};
 
 /// What the event-driven steps of the last frame did.
@@ -176,88 +176,115 @@ impl EventDriven {
         if !self.carried {
             self.start(balls, &step);
         }
+        let (events, end) = self.run_events(balls, &step);
+        let covered = self.fly_to(end, balls, &step);
+        self.carried = straight && end == forces.dt && covered;
+        if self.carried {
+            self.carry_over(forces.dt);
+        }
+        self.elapsed += forces.dt;
+        self.counts.events += events;
+        self.counts.most_in_a_step = self.counts.most_in_a_step.max(events);
+    }
+
+    /// Resolves the step's events in time order, until none is left before the step's end or
+    /// the cap is reached. Returns how many it resolved and how far the step got: its end, or
+    /// the time of the event the cap stopped at.
+    fn run_events(&mut self, balls: &mut [Ball], step: &Step) -> (u64, f64) {
         let cap = MAX_EVENTS_PER_BALL * balls.len() as u64;
         let mut events = 0;
-        let mut end = forces.dt;
         // Every branch predicts the ball again, which replaces its event in the calendar.
         while let Some((i, event, current)) = self.queue.earliest() {
             let now = event.time;
             if !current {
                 // Its partner changed course since: predict the ball again from here.
-                self.fly(&mut balls[i], i, now, &step);
-                self.predict(balls, i, &step);
+                self.fly(&mut balls[i], i, now, step);
+                self.predict(balls, i, step);
                 continue;
             }
             if events == cap {
-                end = now; // no clock is later: events come out in time order
                 self.counts.capped_steps += 1;
-                break;
+                return (events, now); // no clock is later: events come out in time order
             }
             events += 1;
-            self.fly(&mut balls[i], i, now, &step);
-            match event.what {
-                What::Nothing => {}
-                What::Ball(j) => {
-                    let j = j as usize;
-                    self.fly(&mut balls[j], j, now, &step);
-                    self.collide(balls, i, j, forces, now);
-                    self.counts.ball_collisions += 1;
-                    self.queue.changed(i);
-                    self.queue.changed(j);
-                    self.predict(balls, i, &step);
-                    self.predict(balls, j, &step);
+            self.fly(&mut balls[i], i, now, step);
+            self.resolve(balls, i, event.what, now, step);
+        }
+        (events, step.forces.dt)
+    }
+
+    /// Resolves ball `i`'s event `what`, now (ball `i` is flown there), and predicts again
+    /// the events of the balls it changed.
+    fn resolve(&mut self, balls: &mut [Ball], i: usize, what: What, now: f64, step: &Step) {
+        let forces = step.forces;
+        match what {
+            What::Nothing => {}
+            What::Ball(j) => {
+                let j = j as usize;
+                self.fly(&mut balls[j], j, now, step);
+                self.collide(balls, i, j, forces, now);
+                self.counts.ball_collisions += 1;
+                self.queue.changed(i);
+                self.queue.changed(j);
+                self.predict(balls, i, step);
+                self.predict(balls, j, step);
+            }
+            What::Contact => {
+                if let Some(contact) = self.contact[i] {
+                    contact.bounce(&mut balls[i], forces);
+                    self.counts.contacts += 1;
                 }
-                What::Contact => {
-                    if let Some(contact) = self.contact[i] {
-                        contact.bounce(&mut balls[i], forces);
-                        self.counts.contacts += 1;
-                    }
-                    self.flight[i] = Bounds::of(&balls[i], effects).supported(&balls[i], forces);
-                    self.held[i] = self.flight[i] != *forces;
-                    self.queue.changed(i);
-                    self.predict(balls, i, &step);
-                }
-                What::Cell { axis, towards } => {
-                    // The ball keeps its course, so events other balls predicted with it stand,
-                    // and so does its own bounce unless its partner changed course since: then
-                    // only the balls of the cells it now comes near need looking at.
-                    self.cells.shift(i, axis, towards);
-                    if self.queue.current(&self.bounce[i]) {
-                        self.predict_near(balls, i, Some((axis, towards)), &step);
-                    } else {
-                        self.predict(balls, i, &step);
-                    }
+                let bounds = Bounds::of(&balls[i], step.effects);
+                self.flight[i] = bounds.supported(&balls[i], forces);
+                self.held[i] = self.flight[i] != *forces;
+                self.queue.changed(i);
+                self.predict(balls, i, step);
+            }
+            What::Cell { axis, towards } => {
+                // The ball keeps its course, so events other balls predicted with it stand,
+                // and so does its own bounce unless its partner changed course since: then
+                // only the balls of the cells it now comes near need looking at.
+                self.cells.shift(i, axis, towards);
+                if self.queue.current(&self.bounce[i]) {
+                    self.predict_near(balls, i, Some((axis, towards)), step);
+                } else {
+                    self.predict(balls, i, step);
                 }
             }
         }
-        let unused = forces.dt - end;
+    }
+
+    /// The end of the step (or of the time it got to, `end`, if capped): every ball flown from
+    /// its clock to `end`, Euler's last kick. Returns whether the grid still covers every ball.
+    fn fly_to(&mut self, end: f64, balls: &mut [Ball], step: &Step) -> bool {
+        let unused = step.forces.dt - end;
         let mut covered = true;
         for (i, ball) in balls.iter_mut().enumerate() {
-            self.fly(ball, i, end, &step);
+            self.fly(ball, i, end, step);
             covered &= self.cells.covers(ball);
             let flight = Forces {
                 dt: end,
                 ..self.flight[i]
             };
-            integrator.kick_after(ball, &flight);
+            step.integrator.kick_after(ball, &flight);
             // Euler's first kick gave gravity for the whole step: take back the dropped part,
             // so a capped step cannot speed balls up without moving them.
-            if let (Integrator::SemiImplicitEuler, Some(g)) = (integrator, flight.gravity) {
-                ball.vx -= g[0] * unused;
-                ball.vy -= g[1] * unused;
+            if let (Integrator::SemiImplicitEuler, Some(g)) = (step.integrator, flight.gravity) {
+                let velocity = ball.velocity() - Vec2::from(g) * unused;
+                (ball.vx, ball.vy) = (velocity.x, velocity.y);
             }
         }
-        self.carried = straight && unused == 0.0 && covered;
-        if self.carried {
-            self.queue.carry_over();
-            for bounce in &mut self.bounce {
-                bounce.time -= forces.dt;
-            }
-            self.clock.fill(0.0);
+        covered
+    }
+
+    /// Keeps the calendar, the grid and the clocks for the next step, their times moved back
+    /// by the step's length `dt`.
+    fn carry_over(&mut self, dt: f64) {
+        self.queue.carry_over();
+        for bounce in &mut self.bounce {
+            bounce.time -= dt;
         }
-        self.elapsed += forces.dt;
-        self.counts.events += events;
-        self.counts.most_in_a_step = self.counts.most_in_a_step.max(events);
+        self.clock.fill(0.0);
     }
 
     /// The start of a step: balls put back inside the walls, the grid laid, what each ball
@@ -324,15 +351,16 @@ impl EventDriven {
         let Some(g) = forces.gravity else {
             return;
         };
-        let sleep_speed = maths::hypot(g[0], g[1]) * forces.dt;
-        let slow = |ball: &Ball| maths::hypot(ball.vx, ball.vy) <= sleep_speed;
+        let g = Vec2::from(g);
+        let sleep_speed = g.length() * forces.dt;
+        let slow = |ball: &Ball| ball.velocity().length() <= sleep_speed;
         let mut candidates: Vec<usize> = (0..balls.len()).filter(|&i| slow(&balls[i])).collect();
         for &i in &candidates {
             self.asleep[i] = true;
         }
         // Lowest first (furthest along gravity): a ball that wakes can only wake the balls
         // it held up, above it, which then come later in the same pass.
-        let depth = |i: usize| dot(g, [balls[i].x, balls[i].y]);
+        let depth = |i: usize| g.dot(balls[i].position());
         candidates.sort_by(|&a, &b| depth(b).total_cmp(&depth(a)));
         let mut changed = true;
         while changed {
@@ -421,7 +449,7 @@ impl EventDriven {
         let path = step.integrator.path(&balls[i], &self.flight[i]);
         let mut first = (self.bounce[i].time.min(step.horizon) - now, None);
         let visit = |j| {
-            if let Some(time) = self.touch(balls, i, j, &path, step, first.0) {
+            if let Some(time) = self.touch(balls, [i, j], &path, step, first.0) {
                 first = (time, Some(j));
             }
         };
@@ -463,14 +491,13 @@ impl EventDriven {
         self.queue.set(i, next);
     }
 
-    /// When ball `i` (whose clock is now, and whose centre moves along `path`) first touches
-    /// ball `j`, as time from now, if that is earlier than `end`.
+    /// When, of the pair `[i, j]`, ball `i` (whose clock is now, and whose centre moves along
+    /// `path`) first touches ball `j`, as time from now, if that is earlier than `end`.
     #[inline(always)] // called for every neighbour: a call would cost more than the test
     fn touch(
         &self,
         balls: &[Ball],
-        i: usize,
-        j: usize,
+        [i, j]: [usize; 2],
         path: &[Poly; 2],
         step: &Step,
         end: f64,
@@ -489,11 +516,8 @@ impl EventDriven {
             ) || (forces.gravity.is_none() && forces.drag.is_none())
         };
         let touch = if straight(&self.flight[i]) && straight(&self.flight[j]) {
-            let offset = [
-                other.x + other.vx * behind - ball.x,
-                other.y + other.vy * behind - ball.y,
-            ];
-            let velocity = [other.vx - ball.vx, other.vy - ball.vy];
+            let offset = other.position() + other.velocity() * behind - ball.position();
+            let velocity = other.velocity() - ball.velocity();
             toi::straight(offset, velocity, reach, end)
         } else {
             // The other ball as it will be now, so both flights start at the same moment.
@@ -502,7 +526,7 @@ impl EventDriven {
                 step.integrator.fly(&mut there, &self.flight[j], behind);
             }
             let theirs = step.integrator.path(&there, &self.flight[j]);
-            let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis].minus_poly(&path[axis]));
+            let relative: [Poly; 2] = [0, 1].map(|axis| theirs[axis] - path[axis]);
             toi::first_touch(&relative, reach, end)
         };
         touch.filter(|&time| time < end)
@@ -519,13 +543,13 @@ impl EventDriven {
     /// pushed (the floor below takes the impulse, as a wall does).
     fn collide(&mut self, balls: &mut [Ball], i: usize, j: usize, forces: &Forces, now: f64) {
         let (a, b) = (&balls[i], &balls[j]);
-        let offset = [b.x - a.x, b.y - a.y];
-        let distance = (offset[0] * offset[0] + offset[1] * offset[1]).sqrt();
+        let offset = b.position() - a.position();
+        let distance = offset.length_squared().sqrt();
         if distance == 0.0 {
             return;
         }
-        let n = [offset[0] / distance, offset[1] / distance];
-        let approach = dot([b.vx - a.vx, b.vy - a.vy], n);
+        let n = unit(offset, distance);
+        let approach = (b.velocity() - a.velocity()).dot(n);
         if approach >= 0.0 {
             return;
         }
@@ -550,17 +574,17 @@ impl EventDriven {
         if e < 1.0 && -e * approach < REST_SPEED {
             let resting = if self.held[i] && exact::pressed(forces, n) {
                 Some((i, j, n))
-            } else if self.held[j] && exact::pressed(forces, [-n[0], -n[1]]) {
-                Some((j, i, [-n[0], -n[1]]))
+            } else if self.held[j] && exact::pressed(forces, -n) {
+                Some((j, i, -n))
             } else {
                 None
             };
             if let Some((holder, resting, n)) = resting {
-                let (vx, vy) = (balls[holder].vx, balls[holder].vy);
+                let holder = balls[holder].velocity();
                 let ball = &mut balls[resting];
-                let into = dot([ball.vx - vx, ball.vy - vy], n);
-                ball.vx -= into * n[0];
-                ball.vy -= into * n[1];
+                let into = (ball.velocity() - holder).dot(n);
+                let velocity = ball.velocity() - into * n;
+                (ball.vx, ball.vy) = (velocity.x, velocity.y);
                 // From now on gravity no longer presses it into the held ball, as on a wall:
                 // on a curved flight (Verlet's, RK4's) it would press in again at once.
                 if !self.asleep[resting] {
@@ -572,7 +596,7 @@ impl EventDriven {
                 return;
             }
         }
-        let (mass_a, mass_b) = (a.radius * a.radius, b.radius * b.radius);
+        let (mass_a, mass_b) = (mass(a.radius), mass(b.radius));
         let total = mass_a + mass_b;
         let change = (1.0 + e) * approach;
         let (kick_a, kick_b) = match (self.asleep[i], self.asleep[j]) {
@@ -581,30 +605,30 @@ impl EventDriven {
             _ => (change * mass_b / total, change * mass_a / total),
         };
         let a = &mut balls[i];
-        a.vx += kick_a * n[0];
-        a.vy += kick_a * n[1];
+        let velocity = a.velocity() + kick_a * n;
+        (a.vx, a.vy) = (velocity.x, velocity.y);
         let b = &mut balls[j];
-        b.vx -= kick_b * n[0];
-        b.vy -= kick_b * n[1];
+        let velocity = b.velocity() - kick_b * n;
+        (b.vx, b.vy) = (velocity.x, velocity.y);
     }
 }
 
 /// The normal (from `below` to `ball`) of the contact `ball` rests on `below` through, if it
 /// touches it with no normal speed between them and gravity presses it on.
-fn resting_on(ball: &Ball, below: &Ball, forces: &Forces) -> Option<[f64; 2]> {
+fn resting_on(ball: &Ball, below: &Ball, forces: &Forces) -> Option<Vec2> {
     let n = leaning_on(ball, below, BALL_TOUCH_GAP)?;
-    let still = dot([ball.vx - below.vx, ball.vy - below.vy], n).abs() <= TOUCH_SPEED;
+    let still = (ball.velocity() - below.velocity()).dot(n).abs() <= TOUCH_SPEED;
     (still && exact::pressed(forces, n)).then_some(n)
 }
 
 /// The normal (from `below` to `ball`) if the gap between them is at most `gap` of their
 /// radii.
-fn leaning_on(ball: &Ball, below: &Ball, gap: f64) -> Option<[f64; 2]> {
-    let offset = [ball.x - below.x, ball.y - below.y];
-    let distance = maths::hypot(offset[0], offset[1]);
+fn leaning_on(ball: &Ball, below: &Ball, gap: f64) -> Option<Vec2> {
+    let offset = ball.position() - below.position();
+    let distance = offset.length();
     let reach = ball.radius + below.radius;
     if distance == 0.0 || distance - reach > gap * reach {
         return None;
     }
-    Some([offset[0] / distance, offset[1] / distance])
+    Some(unit(offset, distance))
 }

@@ -29,9 +29,9 @@ use super::poly::Poly;
 use super::toi;
 use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
-use crate::physics::floor::{dot, sub, Floor};
-use crate::physics::maths;
+use crate::physics::floor::{unit, Floor};
 use crate::physics::tolerances::{FLOOR_TOUCH_GAP, MAX_EVENTS_PER_STEP, REST_SPEED, TOUCH_SPEED};
+use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
 
 /// One wall of the box, seen from a ball of a given radius.
@@ -67,15 +67,20 @@ impl Side {
         ]
     }
 
+    /// The component of `v` along the wall's axis.
+    fn component(&self, v: Vec2) -> f64 {
+        v.to_array()[self.axis]
+    }
+
     fn distance(&self, ball: &Ball) -> f64 {
-        self.outward * (self.contact - position(ball)[self.axis])
+        self.outward * (self.contact - self.component(ball.position()))
     }
 
     /// The wall's unit normal, pointing into the box.
-    fn normal(&self) -> [f64; 2] {
+    fn normal(&self) -> Vec2 {
         let mut n = [0.0; 2];
         n[self.axis] = -self.outward;
-        n
+        Vec2::from(n)
     }
 
     /// Puts the ball exactly on the wall and bounces it, or lets it come to rest there.
@@ -102,13 +107,13 @@ impl Side {
 /// The rest rule: whether a bounce with rebound speed `rebound` off a surface of unit normal
 /// `n` that keeps `damping` of the speed ends in rest. Elastic bounces never shrink, so they
 /// never need it.
-pub fn rests(rebound: f64, damping: f64, forces: &Forces, n: [f64; 2]) -> bool {
+pub fn rests(rebound: f64, damping: f64, forces: &Forces, n: Vec2) -> bool {
     damping < 1.0 && rebound < REST_SPEED && pressed(forces, n)
 }
 
 /// Whether gravity pushes a ball into a surface whose unit normal (pointing at the ball) is `n`.
-pub fn pressed(forces: &Forces, n: [f64; 2]) -> bool {
-    forces.gravity.is_some_and(|g| dot(g, n) < 0.0)
+pub fn pressed(forces: &Forces, n: Vec2) -> bool {
+    forces.gravity.is_some_and(|g| Vec2::from(g).dot(n) < 0.0)
 }
 
 /// Something fixed a ball can touch.
@@ -117,12 +122,12 @@ pub enum Contact {
     Wall(Side),
     /// A floor's face; `normal` points from the floor to the ball.
     Face {
-        normal: [f64; 2],
+        normal: Vec2,
         damping: f64,
     },
     /// A floor's end point, bounced off like a ball of radius 0 that never moves.
     End {
-        point: [f64; 2],
+        point: Vec2,
         damping: f64,
     },
 }
@@ -134,11 +139,10 @@ impl Contact {
             Contact::Wall(side) => side.bounce(ball, forces),
             Contact::Face { normal, damping } => bounce_along(ball, normal, damping, forces),
             Contact::End { point, damping } => {
-                let offset = sub([ball.x, ball.y], point);
-                let distance = maths::hypot(offset[0], offset[1]);
+                let offset = ball.position() - point;
+                let distance = offset.length();
                 if distance > 0.0 {
-                    let n = [offset[0] / distance, offset[1] / distance];
-                    bounce_along(ball, n, damping, forces);
+                    bounce_along(ball, unit(offset, distance), damping, forces);
                 }
             }
         }
@@ -148,8 +152,8 @@ impl Contact {
 /// Reflects the velocity's component into a surface of unit normal `n` (pointing at the ball)
 /// with `damping`, or removes it (rest) when the rebound would be slower than [`REST_SPEED`]
 /// and gravity presses the ball into the surface. The tangential component is kept.
-fn bounce_along(ball: &mut Ball, n: [f64; 2], damping: f64, forces: &Forces) {
-    let normal_speed = dot([ball.vx, ball.vy], n);
+fn bounce_along(ball: &mut Ball, n: Vec2, damping: f64, forces: &Forces) {
+    let normal_speed = ball.velocity().dot(n);
     if normal_speed >= 0.0 {
         return;
     }
@@ -159,15 +163,16 @@ fn bounce_along(ball: &mut Ball, n: [f64; 2], damping: f64, forces: &Forces) {
         damping
     };
     let change = (1.0 + keep) * normal_speed;
-    ball.vx -= change * n[0];
-    ball.vy -= change * n[1];
+    let velocity = ball.velocity() - change * n;
+    (ball.vx, ball.vy) = (velocity.x, velocity.y);
 }
 
 /// The surfaces a ball rests on, as unit normals pointing at the ball (walls, floors, and in
-/// `super::events` other balls): they hold the part of gravity that presses into them.
+/// `crate::physics::events` other balls): they hold the part of gravity that presses into
+/// them.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Support {
-    normals: [[f64; 2]; Support::MAX],
+    normals: [Vec2; Support::MAX],
     len: usize,
 }
 
@@ -176,7 +181,7 @@ impl Support {
     const MAX: usize = 8;
 
     /// Adds a surface the ball rests on (beyond `MAX`, the ball is held completely).
-    pub fn push(&mut self, n: [f64; 2]) {
+    pub fn push(&mut self, n: Vec2) {
         if self.len < Self::MAX {
             self.normals[self.len] = n;
         }
@@ -189,15 +194,15 @@ impl Support {
     /// of a frictionless disc). In two dimensions that is: along one normal, or between two
     /// normals less than half a turn apart (a wall beside the ball counts: it stops a slide
     /// towards it, and so does a ball above it on the side it would slide to).
-    pub fn hold_completely(&self, g: [f64; 2]) -> bool {
+    pub fn hold_completely(&self, g: Vec2) -> bool {
         if self.len > Self::MAX {
             return true;
         }
-        let up = [-g[0], -g[1]];
+        let up = -g;
         let normals = &self.normals[..self.len];
-        let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
+        let cross = |a: Vec2, b: Vec2| a.x * b.y - a.y * b.x;
         normals.iter().enumerate().any(|(k, &a)| {
-            let along = cross(a, up) == 0.0 && dot(a, up) > 0.0;
+            let along = cross(a, up) == 0.0 && a.dot(up) > 0.0;
             along
                 || normals[k + 1..].iter().any(|&b| {
                     // up = α·a + β·b, by Cramer's rule; both weights must be at least 0.
@@ -215,24 +220,25 @@ impl Support {
         if self.len == 0 {
             return held;
         }
-        let Some(g) = held.gravity.as_mut() else {
+        let Some(gravity) = held.gravity.as_mut() else {
             return held;
         };
         if self.len > Self::MAX {
-            *g = [0.0; 2];
+            *gravity = [0.0; 2];
             return held;
         }
         let normals = &self.normals[..self.len];
+        let mut g = Vec2::from(*gravity);
         for &n in normals {
-            let push = dot(*g, n);
+            let push = g.dot(n);
             if push < 0.0 {
-                g[0] -= push * n[0];
-                g[1] -= push * n[1];
+                g -= push * n;
             }
         }
-        if normals.iter().any(|&n| dot(*g, n) < -TOUCH_SPEED) {
-            *g = [0.0; 2];
+        if normals.iter().any(|&n| g.dot(n) < -TOUCH_SPEED) {
+            g = Vec2::ZERO;
         }
+        *gravity = g.to_array();
         held
     }
 }
@@ -292,13 +298,13 @@ impl<'a> Bounds<'a> {
     /// The walls and floor faces `ball` rests on now: touching, not moving through them.
     pub fn support(&self, ball: &Ball) -> Support {
         self.surfaces(
-            |side| side.distance(ball) == 0.0 && velocity(ball)[side.axis] == 0.0,
+            |side| side.distance(ball) == 0.0 && side.component(ball.velocity()) == 0.0,
             |floor| resting_on_face(floor, ball),
         )
     }
 
     /// The walls and floor faces within `gap` (a share of the radius) of `ball`, whatever its
-    /// speed: what may hold up a ball that sleeps (`super::events::system`).
+    /// speed: what may hold up a ball that sleeps (`crate::physics::events::system`).
     pub fn near(&self, ball: &Ball, gap: f64) -> Support {
         self.surfaces(
             |side| side.distance(ball) <= gap * ball.radius,
@@ -310,7 +316,7 @@ impl<'a> Bounds<'a> {
     fn surfaces(
         &self,
         wall: impl Fn(&Side) -> bool,
-        face: impl Fn(&Floor) -> Option<[f64; 2]>,
+        face: impl Fn(&Floor) -> Option<Vec2>,
     ) -> Support {
         let mut support = Support::default();
         for side in self.sides.iter().flatten().filter(|side| wall(side)) {
@@ -355,9 +361,7 @@ impl<'a> Bounds<'a> {
             if reach[side.axis] < side.distance(ball) {
                 continue;
             }
-            let gap = path[side.axis]
-                .scale(-side.outward)
-                .plus(side.outward * side.contact);
+            let gap = path[side.axis] * -side.outward + side.outward * side.contact;
             keep_earliest(
                 gap.first_negative(left)
                     .map(|time| (time, Contact::Wall(*side))),
@@ -372,32 +376,29 @@ impl<'a> Bounds<'a> {
 
 /// The signed distance of the flight's centre from the floor's line, along its normal.
 fn line_distance(floor: &Floor, path: &[Poly; 2]) -> Poly {
-    let n = floor.normal();
-    path[0]
-        .scale(n[0])
-        .plus_poly(&path[1].scale(n[1]))
-        .plus(-dot(n, floor.from))
+    let (n, [from, _]) = (floor.normal(), floor.ends());
+    path[0] * n.x + path[1] * n.y - n.dot(from)
 }
 
 /// Whether a point's foot on the floor's line falls on the segment.
-fn on_segment(floor: &Floor, point: [f64; 2]) -> bool {
+fn on_segment(floor: &Floor, point: Vec2) -> bool {
     (0.0..=1.0).contains(&floor.along(point))
 }
 
 /// The normal of the floor's face `ball` rests on, if it touches the face with no normal speed.
-fn resting_on_face(floor: &Floor, ball: &Ball) -> Option<[f64; 2]> {
+fn resting_on_face(floor: &Floor, ball: &Ball) -> Option<Vec2> {
     face_within(floor, ball, FLOOR_TOUCH_GAP)
-        .filter(|&n| dot(velocity(ball), n).abs() <= TOUCH_SPEED)
+        .filter(|&n| ball.velocity().dot(n).abs() <= TOUCH_SPEED)
 }
 
 /// The normal (pointing at the ball) of the floor's face, if `ball` is within `gap` (a share
 /// of its radius) of touching it, with its foot on the segment.
-fn face_within(floor: &Floor, ball: &Ball, gap: f64) -> Option<[f64; 2]> {
-    let n = floor.normal();
-    let distance = dot(sub([ball.x, ball.y], floor.from), n);
-    let n = if distance < 0.0 { [-n[0], -n[1]] } else { n };
+fn face_within(floor: &Floor, ball: &Ball, gap: f64) -> Option<Vec2> {
+    let (n, [from, _]) = (floor.normal(), floor.ends());
+    let distance = (ball.position() - from).dot(n);
+    let n = if distance < 0.0 { -n } else { n };
     let touching = (distance.abs() - ball.radius).abs() <= gap * ball.radius;
-    (touching && on_segment(floor, [ball.x, ball.y])).then_some(n)
+    (touching && on_segment(floor, ball.position())).then_some(n)
 }
 
 /// When the flight `path` of `ball` first touches the floor's face or one of its end points
@@ -416,9 +417,9 @@ fn floor_contact(
         return None; // the line, so the whole segment, is out of reach this step
     }
     let side = if now < 0.0 { -1.0 } else { 1.0 };
-    let gap = distance.scale(side).plus(-r);
+    let gap = distance * side - r;
     let approaching = |time: f64| gap.slope(time) < -TOUCH_SPEED;
-    let at = |time: f64| [path[0].at(time), path[1].at(time)];
+    let at = |time: f64| Vec2::new(path[0].at(time), path[1].at(time));
     let face_time = if gap.at(0.0) >= 0.0 {
         gap.first_negative(left)
             .filter(|&time| approaching(time) && on_segment(floor, at(time)))
@@ -427,9 +428,8 @@ fn floor_contact(
         // by a rounding error (bounce now if moving into it).
         (on_segment(floor, at(0.0)) && approaching(0.0)).then_some(0.0)
     };
-    let n = floor.normal();
     let face = face_time.map(|time| {
-        let normal = [n[0] * side, n[1] * side];
+        let normal = floor.normal() * side;
         (
             time,
             Contact::Face {
@@ -438,8 +438,8 @@ fn floor_contact(
             },
         )
     });
-    let ends = [floor.from, floor.to].map(|point| {
-        let offset = [path[0].plus(-point[0]), path[1].plus(-point[1])];
+    let ends = floor.ends().map(|point| {
+        let offset = [path[0] - point.x, path[1] - point.y];
         toi::first_touch(&offset, r, left).map(|time| {
             (
                 time,
@@ -455,26 +455,18 @@ fn floor_contact(
         .min_by(|a, b| a.0.total_cmp(&b.0))
 }
 
-fn position(ball: &Ball) -> [f64; 2] {
-    [ball.x, ball.y]
-}
-
-fn velocity(ball: &Ball) -> [f64; 2] {
-    [ball.vx, ball.vy]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     /// Gravity as in the lesson, straight down.
-    const G: [f64; 2] = [0.0, 0.5];
+    const G: Vec2 = Vec2::new(0.0, 0.5);
 
     fn support(normals: &[[f64; 2]]) -> Support {
         let mut support = Support::default();
-        for &[x, y] in normals {
-            let length = maths::hypot(x, y);
-            support.push([x / length, y / length]);
+        for &n in normals {
+            let n = Vec2::from(n);
+            support.push(unit(n, n.length()));
         }
         support
     }

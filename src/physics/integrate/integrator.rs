@@ -17,7 +17,7 @@ use crate::physics::maths;
 use crate::physics::work::{tally, Work};
 
 /// What the integrators move: a centre and a velocity. A [`Ball`] is one; the contact solver
-/// moves a compact copy of its balls, without their trails (`super::contacts::Body`).
+/// moves a compact copy of its balls, without their trails (`Body` in `crate::physics::contacts`).
 pub trait Movable {
     /// Centre and velocity, `[x, y, vx, vy]` in px and px/frame, to change in place.
     fn motion(&mut self) -> [&mut f64; 4];

@@ -5,6 +5,11 @@
 //! The method needs no formula per degree: a polynomial is monotone between the roots of its
 //! derivative, so on each of those pieces it crosses zero at most once, and bisection finds
 //! that crossing to the last bit. The derivative's roots are found the same way, one degree down.
+//!
+//! `+`, `−` and `·` work on polynomials and with numbers, so a squared distance reads
+//! `x·x + y·y − reach²` (`x * x + y * y - reach * reach`).
+
+use std::ops::{Add, Mul, Sub};
 
 /// The highest degree held: RK4's flight is a quartic, and a squared distance along two
 /// such flights is of degree 8.
@@ -48,20 +53,6 @@ impl Poly {
             .fold(0.0, |sum, &c| sum * t + c)
     }
 
-    /// `k · self`.
-    pub fn scale(mut self, k: f64) -> Poly {
-        self.c.iter_mut().for_each(|c| *c *= k);
-        self.trim();
-        self
-    }
-
-    /// `self + k`.
-    pub fn plus(mut self, k: f64) -> Poly {
-        self.c[0] += k;
-        self.trim();
-        self
-    }
-
     /// The coefficient of `t^i` (0 beyond the degree).
     pub fn coefficient(&self, i: usize) -> f64 {
         self.c.get(i).copied().unwrap_or(0.0)
@@ -70,35 +61,6 @@ impl Poly {
     /// The highest power with a non-zero coefficient.
     pub fn degree(&self) -> usize {
         self.degree
-    }
-
-    /// `self + other`.
-    pub fn plus_poly(mut self, other: &Poly) -> Poly {
-        self.c.iter_mut().zip(other.c).for_each(|(c, o)| *c += o);
-        self.trim();
-        self
-    }
-
-    /// `self − other`.
-    pub fn minus_poly(self, other: &Poly) -> Poly {
-        self.plus_poly(&other.scale(-1.0))
-    }
-
-    /// `self · other`; the degrees must add up to at most `MAX_DEGREE`.
-    pub fn mul(&self, other: &Poly) -> Poly {
-        assert!(
-            self.degree + other.degree <= MAX_DEGREE,
-            "product degree too high"
-        );
-        let mut c = [0.0; MAX_DEGREE + 1];
-        for i in 0..=self.degree {
-            for j in 0..=other.degree {
-                c[i + j] += self.c[i] * other.c[j];
-            }
-        }
-        let mut p = Poly { c, degree: 0 };
-        p.trim();
-        p
     }
 
     /// The derivative's value at `t`.
@@ -192,7 +154,7 @@ impl Poly {
                 let (root, _) = if a > 0.0 {
                     self.bisect(left, right)
                 } else {
-                    self.scale(-1.0).bisect(left, right)
+                    (*self * -1.0).bisect(left, right)
                 };
                 roots.t[roots.len] = root;
                 roots.len += 1;
@@ -219,9 +181,94 @@ impl Poly {
     }
 }
 
+/// `p + q`, coefficient by coefficient.
+impl Add for Poly {
+    type Output = Poly;
+    fn add(mut self, other: Poly) -> Poly {
+        self.c.iter_mut().zip(other.c).for_each(|(c, o)| *c += o);
+        self.trim();
+        self
+    }
+}
+
+/// `p − q`, coefficient by coefficient.
+impl Sub for Poly {
+    type Output = Poly;
+    fn sub(mut self, other: Poly) -> Poly {
+        self.c.iter_mut().zip(other.c).for_each(|(c, o)| *c -= o);
+        self.trim();
+        self
+    }
+}
+
+/// `p · q`; the degrees must add up to at most `MAX_DEGREE`.
+impl Mul for Poly {
+    type Output = Poly;
+    fn mul(self, other: Poly) -> Poly {
+        assert!(
+            self.degree + other.degree <= MAX_DEGREE,
+            "product degree too high"
+        );
+        let mut c = [0.0; MAX_DEGREE + 1];
+        for i in 0..=self.degree {
+            for j in 0..=other.degree {
+                c[i + j] += self.c[i] * other.c[j];
+            }
+        }
+        let mut p = Poly { c, degree: 0 };
+        p.trim();
+        p
+    }
+}
+
+/// `p · k`: every coefficient times `k`.
+impl Mul<f64> for Poly {
+    type Output = Poly;
+    fn mul(mut self, k: f64) -> Poly {
+        self.c.iter_mut().for_each(|c| *c *= k);
+        self.trim();
+        self
+    }
+}
+
+/// `p + k`: the constant term plus `k`.
+impl Add<f64> for Poly {
+    type Output = Poly;
+    fn add(mut self, k: f64) -> Poly {
+        self.c[0] += k;
+        self.trim();
+        self
+    }
+}
+
+/// `p − k`: the constant term minus `k` (the same bits as `p + (−k)`).
+impl Sub<f64> for Poly {
+    type Output = Poly;
+    fn sub(mut self, k: f64) -> Poly {
+        self.c[0] -= k;
+        self.trim();
+        self
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_operators_are_the_formulas_on_the_coefficients_to_the_bit() {
+        let (p, q) = (Poly::new(&[0.1, -2.7, 3.3]), Poly::new(&[1e-3, 0.7]));
+        assert_eq!(p + q, Poly::new(&[0.1 + 1e-3, -2.7 + 0.7, 3.3]));
+        assert_eq!(p - q, p + q * -1.0, "subtracting is adding the negative");
+        assert_eq!(p - 0.3, p + -0.3);
+        assert_eq!(p * 0.5, Poly::new(&[0.1 * 0.5, -2.7 * 0.5, 3.3 * 0.5]));
+        let product = p * q;
+        assert_eq!(product.degree(), 3);
+        assert_eq!(
+            product.coefficient(1).to_bits(),
+            (0.1 * 0.7 + -2.7 * 1e-3f64).to_bits()
+        );
+    }
 
     #[test]
     fn a_falling_parabola_first_drops_below_zero_at_its_root() {

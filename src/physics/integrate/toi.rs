@@ -17,13 +17,15 @@
 
 use super::poly::Poly;
 use crate::physics::tolerances::{REBOUND_GAP, TOUCH_SPEED};
+use crate::physics::vec2::Vec2;
 
 /// The first time in `[0, end]` at which two centres whose offset (second minus first) moves
 /// as `relative` come within `reach` of each other while approaching, if they do.
 pub fn first_touch(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
     if relative[0].degree() <= 1 && relative[1].degree() <= 1 {
-        let [offset, velocity] = [0, 1].map(|i| relative.map(|p| p.coefficient(i)));
-        straight(offset, velocity, reach, end)
+        // The offset now is the constant term, its velocity the linear one.
+        let term = |i| Vec2::new(relative[0].coefficient(i), relative[1].coefficient(i));
+        straight(term(0), term(1), reach, end)
     } else {
         curved(relative, reach, end)
     }
@@ -31,18 +33,16 @@ pub fn first_touch(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
 
 /// `first_touch` for centres whose offset moves in a straight line, `offset + velocity·τ`:
 /// the smaller root of `a·τ² + 2b·τ + c = 0`.
-pub fn straight(offset: [f64; 2], velocity: [f64; 2], reach: f64, end: f64) -> Option<f64> {
-    let [dx, dy] = offset;
-    let [vx, vy] = velocity;
-    let b = dx * vx + dy * vy;
+pub fn straight(offset: Vec2, velocity: Vec2, reach: f64, end: f64) -> Option<f64> {
+    let b = offset.dot(velocity);
     if b >= -TOUCH_SPEED * reach {
         return None; // parting, or too slow to count as approaching: never closer in a line
     }
-    let c = dx * dx + dy * dy - reach * reach;
+    let c = offset.length_squared() - reach * reach;
     if c <= 0.0 {
         return Some(0.0); // touching or a hair inside, and approaching
     }
-    let a = vx * vx + vy * vy;
+    let a = velocity.length_squared();
     let discriminant = b * b - a * c;
     if discriminant < 0.0 {
         return None; // they pass each other
@@ -53,8 +53,8 @@ pub fn straight(offset: [f64; 2], velocity: [f64; 2], reach: f64, end: f64) -> O
 
 /// Relative motion along a curve: the first root of `|Δ(τ)|² − reach²`.
 fn curved(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
-    let [x, y] = relative;
-    let gap = x.mul(x).plus_poly(&y.mul(y)).plus(-reach * reach);
+    let [x, y] = *relative;
+    let gap = x * x + y * y - reach * reach;
     // d/dτ of the squared distance is 2·Δ·Δ'; approaching means it is negative.
     let approaching = |time: f64| gap.slope(time) < -2.0 * TOUCH_SPEED * reach;
     let start = gap.at(0.0);
@@ -68,7 +68,7 @@ fn curved(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
     // flight, a curved one can bring them together again, so look for the gap falling a hair
     // below where it is now.
     let slack = REBOUND_GAP * reach * reach - start;
-    gap.plus(slack)
+    (gap + slack)
         .first_negative(end)
         .filter(|&time| approaching(time))
 }
