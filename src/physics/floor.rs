@@ -14,12 +14,6 @@ pub struct Floor {
     pub damping: f64,
 }
 
-/// `offset / length`, component by component: the direction of `offset` when `length` is its
-/// length. (A division each, not a multiplication by `1 / length`, which rounds otherwise.)
-pub fn unit(offset: Vec2, length: f64) -> Vec2 {
-    Vec2::new(offset.x / length, offset.y / length)
-}
-
 impl Floor {
     /// The end points `from` and `to`.
     pub fn ends(&self) -> [Vec2; 2] {
@@ -30,7 +24,7 @@ impl Floor {
     pub fn normal(&self) -> Vec2 {
         let [from, to] = self.ends();
         let d = to - from;
-        unit(-d.perp(), d.length())
+        -d.perp() / d.length()
     }
 
     /// Where along the segment the point's projection falls: 0 at `from`, 1 at `to`.
@@ -51,7 +45,7 @@ impl Floor {
         let offset = centre - point;
         let distance = offset.length();
         let normal = if distance > 0.0 {
-            unit(offset, distance)
+            offset / distance
         } else {
             self.normal()
         };
@@ -105,7 +99,7 @@ impl Floor {
         if distance >= ball.radius || distance == 0.0 {
             return;
         }
-        self.resolve(ball, unit(offset, distance), ball.radius - distance);
+        self.resolve(ball, offset / distance, ball.radius - distance);
     }
 
     /// Moves the ball `depth` along `n` and, if it is moving into the floor, reflects the

@@ -5,7 +5,7 @@
 //! `x·x' + y·y'`), so code written with it gives the same bits as the same formula written on
 //! the components.
 
-use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
+use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 
 use super::maths;
 
@@ -83,6 +83,15 @@ impl Mul<Vec2> for f64 {
     }
 }
 
+/// Each component divided by `k`: `offset / length` is the direction of `offset`. (A division
+/// each, not a multiplication by `1 / k`, which would round differently.)
+impl Div<f64> for Vec2 {
+    type Output = Vec2;
+    fn div(self, k: f64) -> Vec2 {
+        Vec2::new(self.x / k, self.y / k)
+    }
+}
+
 impl Neg for Vec2 {
     type Output = Vec2;
     fn neg(self) -> Vec2 {
@@ -113,6 +122,7 @@ mod tests {
         assert_eq!(a + b, Vec2::new(0.1 + 3.3, -2.7 + 1e-3));
         assert_eq!(a - b, Vec2::new(0.1 - 3.3, -2.7 - 1e-3));
         assert_eq!(a * 0.5, 0.5 * a);
+        assert_eq!(a / 3.0, Vec2::new(0.1 / 3.0, -2.7 / 3.0));
         assert_eq!(-a, Vec2::new(-0.1, 2.7));
         assert_eq!(a.perp().dot(a), 0.0);
         assert_eq!(Vec2::new(3.0, 4.0).length(), 5.0);

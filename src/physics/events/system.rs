@@ -43,7 +43,6 @@ use super::cells::Cells;
 use super::queue::{Event, Queue, What, NOTHING};
 use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
-use crate::physics::floor::unit;
 use crate::physics::integrate::exact::{self, Bounds, Contact, Support};
 use crate::physics::integrate::integrator::{Forces, Integrator};
 use crate::physics::integrate::poly::Poly;
@@ -548,7 +547,7 @@ impl EventDriven {
         if distance == 0.0 {
             return;
         }
-        let n = unit(offset, distance);
+        let n = offset / distance;
         let approach = (b.velocity() - a.velocity()).dot(n);
         if approach >= 0.0 {
             return;
@@ -630,5 +629,5 @@ fn leaning_on(ball: &Ball, below: &Ball, gap: f64) -> Option<Vec2> {
     if distance == 0.0 || distance - reach > gap * reach {
         return None;
     }
-    Some(unit(offset, distance))
+    Some(offset / distance)
 }

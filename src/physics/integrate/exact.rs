@@ -29,7 +29,7 @@ use super::poly::Poly;
 use super::toi;
 use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
-use crate::physics::floor::{unit, Floor};
+use crate::physics::floor::Floor;
 use crate::physics::tolerances::{FLOOR_TOUCH_GAP, MAX_EVENTS_PER_STEP, REST_SPEED, TOUCH_SPEED};
 use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
@@ -142,7 +142,7 @@ impl Contact {
                 let offset = ball.position() - point;
                 let distance = offset.length();
                 if distance > 0.0 {
-                    bounce_along(ball, unit(offset, distance), damping, forces);
+                    bounce_along(ball, offset / distance, damping, forces);
                 }
             }
         }
@@ -466,7 +466,7 @@ mod tests {
         let mut support = Support::default();
         for &n in normals {
             let n = Vec2::from(n);
-            support.push(unit(n, n.length()));
+            support.push(n / n.length());
         }
         support
     }
