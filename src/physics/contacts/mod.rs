@@ -9,7 +9,8 @@
 //! - [`grid`]: a uniform grid rebuilt every step, so finding the pairs that can touch costs
 //!   O(N), not O(N²).
 //! - [`solver`]: Box2D's sequential impulses for discs, iterated in sub-steps, island by
-//!   island (its own doc lists the stages).
+//!   island. Its own doc lists the stages, named as Box2D v3 names them: prepare, warm start,
+//!   solve, relax, restitution, store.
 
 pub mod grid;
 pub mod solver;

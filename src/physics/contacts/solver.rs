@@ -7,46 +7,61 @@
 //! pass; and it iterates the way Box2D v3's *soft step* and "small steps" XPBD do: each
 //! iteration is a short sub-step (gravity, one velocity pass, flight, one position pass),
 //! with the contacts found once per step. `docs/contacts.md` has the measurements that chose
-//! this over more passes per step, softer contacts, and plain substeps.
+//! this over more passes per step, softer contacts, and plain substeps. The stages carry
+//! Box2D v3's names (`solver.c`, `contact_solver.c`), each a function of that name.
 //!
 //! One step:
 //!
-//! 1. **Find contacts** where the balls are: pairs, walls and floors that can touch within the
-//!    step (the grid grows each ball by the distance it can travel). A contact with a gap is
-//!    *speculative*: it only forbids closing by more than the gap. The solver works on a copy
-//!    of the balls in the grid's order, and a ball that can touch nothing takes the whole step
-//!    at once, as in the lesson.
-//! 2. **Islands**: the balls with contacts fall into islands, balls joined by pair contacts
-//!    directly or through others. Islands share no ball, so each is solved on its own, all
-//!    its sub-steps at once, while its balls are in the cache (the numbers are the same as
-//!    one sweep over every contact).
-//! 3. **Without gravity or drag**, balls fly straight between contacts, so an island is
-//!    solved touch by touch: it flies to the time its first contact touches (a closed
-//!    form), that contact alone is solved, and so on to the end of the step. Balls that
-//!    start it overlapping are first set apart to touching. An island that still overlaps,
-//!    or keeps colliding, is put back and takes the sub-steps.
-//! 4. **Sub-steps**: otherwise, for each island, `iterations` times, for a sub-step `h` of
-//!    the step:
-//!    - **Kick**: the integrator adds `h`'s gravity and drag to every velocity.
-//!    - **Warm start** (under gravity only): each contact pushes again with its total impulse
-//!      of the sub-step before (the previous step's, at first). A stack that stood then
-//!      stands now, instead of its weight having to travel up through it again, one ball per
-//!      pass. A bounce is not carried: it is over once the balls part.
-//!    - **Velocity pass** (Gauss–Seidel): contact after contact, the impulse that brings its
-//!      relative normal speed to its target, added to its running total, which is never
-//!      negative (contacts push, never pull). A contact that touches within `h` bounces if
-//!      `e` times its approach speed now beats the rest speed: that is its target. Slower,
-//!      it stops (resting balls do not bounce, so a pile settles instead of buzzing).
-//!    - **Fly** `h` with the solved velocities.
-//!    - **Position pass**: overlap beyond a small slop is partly pushed out, moving positions
-//!      only, so no kinetic energy is added.
+//! 1. **Prepare** (`ContactSolver::prepare`): find the contacts where the balls are —
+//!    pairs, walls and floors that can touch within the step (the grid grows each ball by
+//!    the distance it can travel). A contact with a gap is *speculative*: it only forbids
+//!    closing by more than the gap. The solver works on a copy of the balls in the grid's
+//!    order. Each contact gets the impulse it ended the last step with, from the warm-start
+//!    memory (`WarmStartMemory::recall`), and the balls with contacts fall into islands,
+//!    balls joined by pair contacts directly or through others. Islands share no ball, so
+//!    each is solved on its own, all its sub-steps at once, while its balls are in the cache
+//!    (the numbers are the same as one sweep over every contact).
+//! 2. **Without gravity or drag**, balls fly straight between contacts, so an island is
+//!    solved touch by touch (`ContactSet::solve_free_island`): it flies to the time its
+//!    first contact touches (a closed form), that contact alone is solved, and so on to the
+//!    end of the step. Balls that start it overlapping are first set apart to touching. An
+//!    island that still overlaps, or keeps colliding, is put back and takes the sub-steps.
+//! 3. **Sub-steps** (`ContactSet::solve_in_substeps`): otherwise, for each island,
+//!    `iterations` times, for a sub-step `h` of the step:
+//!    - **Integrate velocities**: the integrator adds `h`'s gravity and drag to every
+//!      velocity.
+//!    - **Warm start** (`ContactSet::warm_start`; under gravity only): each contact pushes
+//!      again with its total impulse of the sub-step before (the previous step's, at first).
+//!      A stack that stood then stands now, instead of its weight having to travel up through
+//!      it again, one ball per pass. A bounce is not carried: it is over once the balls part.
+//!    - **Solve** (`ContactSet::solve`), the velocity pass (Gauss–Seidel): contact after
+//!      contact, the impulse that brings its relative normal speed to its target, added to
+//!      its running total, which is never negative (contacts push, never pull). A contact
+//!      that touches within `h` bounces if `e` times its approach speed now beats the rest
+//!      speed: that is its target. Slower, it stops (resting balls do not bounce, so a pile
+//!      settles instead of buzzing). Box2D v3 leaves bounces to its restitution stage, from
+//!      the approach speed the contact was prepared with; here a contact bounces at its
+//!      approach speed of the moment, so a struck ball passes the blow on within the step.
+//!    - **Integrate positions**: fly `h` with the solved velocities.
+//!    - **Relax** (`ContactSet::relax`), the position pass: overlap beyond a small slop is
+//!      partly pushed out, moving positions only, so no kinetic energy is added. (Box2D v3's
+//!      solve pushes overlap out with extra velocity, which its relax takes away again; here
+//!      the solve adds none, and the push is done here, on positions, as in Box2D v2.4.)
+//! 4. A ball that can touch nothing takes the whole step at once, as in the lesson, and the
+//!    balls are copied back into the scene, inside its walls.
+//! 5. **Restitution** (`ContactSolver::restitution`): the bounces left after the
+//!    sub-steps. Every listed contact has bounced in its solve; what is left is a pair the
+//!    step did not list (a ball struck within the step, running into a neighbour it was not
+//!    heading for), which is set apart to touching and bounces now.
+//! 6. **Store** (`ContactSolver::store`): each contact's impulse goes into the warm-start
+//!    memory for the next step.
 //!
 //! Everything happens in a fixed order (the grid's), so the same balls give the same bytes.
 
 use std::ops::Range;
 
 use super::grid::Grid;
-use crate::physics::ball::Ball;
+use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
 use crate::physics::integrate::integrator::{Forces, Movable};
 use crate::physics::maths;
@@ -54,6 +69,7 @@ use crate::physics::motion::Motion;
 use crate::physics::tolerances::{
     LESSON_GRAVITY, MAX_PAIRS_PER_BALL, PAIR_MARGIN, PUSH, REST_SPEED, SLOP, TOUCHES_PER_CONTACT,
 };
+use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
 use crate::physics::work::{tally, Work};
 
@@ -64,20 +80,19 @@ const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;
 /// the solver never reads), so its copy of the balls in grid order is all it sweeps.
 #[derive(Clone, Copy, Debug)]
 struct Body {
-    x: f64,
-    y: f64,
-    vx: f64,
-    vy: f64,
+    /// Centre, px.
+    position: Vec2,
+    /// Velocity, px/frame.
+    velocity: Vec2,
+    /// Radius, px.
     radius: f64,
 }
 
 impl Body {
     fn of(ball: &Ball) -> Body {
         Body {
-            x: ball.x,
-            y: ball.y,
-            vx: ball.vx,
-            vy: ball.vy,
+            position: ball.position(),
+            velocity: ball.velocity(),
             radius: ball.radius,
         }
     }
@@ -85,7 +100,15 @@ impl Body {
 
 impl Movable for Body {
     fn motion(&mut self) -> [&mut f64; 4] {
-        [&mut self.x, &mut self.y, &mut self.vx, &mut self.vy]
+        let Body {
+            position, velocity, ..
+        } = self;
+        [
+            &mut position.x,
+            &mut position.y,
+            &mut velocity.x,
+            &mut velocity.y,
+        ]
     }
 }
 
@@ -100,6 +123,77 @@ struct SubStep {
     loaded: bool,
     /// Below this parting speed, px/frame, a contact does not bounce.
     rest_speed: f64,
+}
+
+/// How the steps of one frame move the balls, worked out once per frame.
+#[derive(Clone, Copy, Debug)]
+struct Stepping<'a> {
+    /// The scene's integrator and iterations.
+    motion: &'a Motion,
+    /// Steps in the frame.
+    steps: u32,
+    /// Length of a step, frames.
+    dt: f64,
+    /// Gravity and drag over a whole step, and over one sub-step.
+    whole: Forces,
+    forces: Forces,
+    sub: SubStep,
+    /// Whether no gravity or drag acts, so every ball flies straight between contacts.
+    free: bool,
+}
+
+impl Stepping<'_> {
+    fn new<'a>(effects: &Effects, motion: &'a Motion) -> Stepping<'a> {
+        let (steps, whole) = motion.plan(effects);
+        let forces = Forces::new(effects).split(steps * motion.iterations);
+        let gravity = gravity(effects);
+        Stepping {
+            motion,
+            steps,
+            dt: 1.0 / f64::from(steps),
+            whole,
+            forces,
+            sub: SubStep {
+                h: forces.dt,
+                loaded: gravity > 0.0,
+                rest_speed: REST_SPEED * gravity / LESSON_GRAVITY,
+            },
+            free: whole.gravity.is_none() && whole.drag.is_none(),
+        }
+    }
+}
+
+/// The strength of the scene's gravity, px/frame² (0 without).
+fn gravity(effects: &Effects) -> f64 {
+    effects.gravity.map_or(0.0, |g| Vec2::from(g).length())
+}
+
+/// What decides, as contacts are found, whether one can touch within the step.
+#[derive(Clone, Copy, Debug)]
+struct Lookahead {
+    /// Length of the step, frames.
+    dt: f64,
+    /// How far gravity alone can move a ball in the step, px.
+    fall: f64,
+}
+
+impl Lookahead {
+    fn new(effects: &Effects, dt: f64) -> Lookahead {
+        let fall = gravity(effects) * dt * dt;
+        Lookahead { dt, fall }
+    }
+
+    /// How far `ball` can get in this step, and a little more, so that it stops at a surface
+    /// instead of passing into it, and a resting pair is found again next step.
+    fn margin(self, ball: &Ball) -> f64 {
+        ball.velocity().length_squared().sqrt() * self.dt + self.fall + PAIR_MARGIN * ball.radius
+    }
+
+    /// Whether a contact at `separation` closing at `approach` (negative: closing) can touch
+    /// within the step, with `slack` to spare.
+    fn can_touch(self, separation: f64, approach: f64, slack: f64) -> bool {
+        separation + approach.min(0.0) * self.dt - self.fall < slack
+    }
 }
 
 /// A contact between balls `a` and `b`, the normal pointing from `a` to `b`.
@@ -127,7 +221,7 @@ struct FixedContact {
 /// What every contact tracks while it is solved.
 #[derive(Clone, Copy, Debug)]
 struct ContactState {
-    normal: [f64; 2],
+    normal: Vec2,
     /// Gap at the start of the sub-step, px (negative: overlap).
     separation: f64,
     restitution: f64,
@@ -139,40 +233,69 @@ struct ContactState {
     key: u64,
 }
 
-/// The contact solver, with buffers and last step's impulses kept from step to step. A scene
-/// without ball-ball collisions (or in exact mode) never creates one.
+/// The gap between two balls, px (negative: overlap), and the normal from the first to the
+/// second.
+#[derive(Clone, Copy, Debug)]
+struct Gap {
+    separation: f64,
+    normal: Vec2,
+}
+
+/// The contact solver. A scene without ball-ball collisions (or in exact mode) never
+/// creates one.
 #[derive(Clone, Debug)]
 pub struct ContactSolver {
+    settings: Settings,
+    memory: WarmStartMemory,
+    scratch: Scratch,
+}
+
+/// The solver's settings, fixed when the scene builds it.
+#[derive(Clone, Debug)]
+struct Settings {
     /// Ball-ball restitution (0 to 1; the scene checks it).
     restitution: f64,
+}
+
+/// The warm-start memory, all that carries from one step to the next: the impulse each
+/// contact ended the last step with, by contact key, sorted by key (only those above 0).
+#[derive(Clone, Debug, Default)]
+struct WarmStartMemory {
+    impulses: Vec<(u64, f64)>,
+}
+
+/// The scratch space: buffers refilled every step, kept only so that a step allocates
+/// nothing. No number in them carries from one step to the next.
+#[derive(Clone, Debug, Default)]
+struct Scratch {
     grid: Grid,
-    pairs: Vec<PairContact>,
-    fixed: Vec<FixedContact>,
-    /// Last step's impulses by contact key, sorted by key: the warm start.
-    remembered: Vec<(u64, f64)>,
     /// The balls in the grid's order: what the solver moves. `grid.order()[k]` is the
     /// scene's index of `local[k]`.
     local: Vec<Body>,
     /// The pairs the grid finds, as places in its order.
     places: Vec<[u32; 2]>,
-    /// Of those, the pairs that could not touch as the step began (see `settle_unlisted`).
+    /// Of those, the pairs that could not touch as the step began (see
+    /// `ContactSolver::restitution`).
     unlisted: Vec<[u32; 2]>,
+    /// This step's contacts, island by island once sorted.
+    pairs: Vec<PairContact>,
+    fixed: Vec<FixedContact>,
     /// The balls (of `local`) with a contact this step, island by island.
     active: Vec<usize>,
     /// Where each island's balls are in `active` and its contacts in `pairs` and `fixed`.
     islands: Vec<Island>,
-    /// Scratch space for finding the islands: the union–find tree, each ball's island, and
-    /// the contacts in the order found.
+    /// For finding the islands: the union–find tree, each ball's island, the balls with a
+    /// contact in the order found, and the contacts in the order found.
     parent: Vec<usize>,
     island_of: Vec<usize>,
-    /// The balls with a contact, in order.
     with_contact: Vec<usize>,
-    /// Scratch space: the balls (of `local`) without a contact this step, at its start.
-    untouched: Vec<usize>,
     spare_pairs: Vec<PairContact>,
     spare_fixed: Vec<FixedContact>,
-    /// Where an island's balls were, for when it cannot be solved touch by touch.
-    saved: Vec<[f64; 4]>,
+    /// The balls (of `local`) without a contact this step, at its start.
+    untouched: Vec<usize>,
+    /// Where an island's balls were (position, velocity), for when it cannot be solved
+    /// touch by touch.
+    saved: Vec<(Vec2, Vec2)>,
 }
 
 /// A group of balls joined by pair contacts, directly or through others, that touches no
@@ -188,6 +311,15 @@ impl Island {
     fn ranges(&mut self) -> [&mut Range<usize>; 3] {
         [&mut self.balls, &mut self.pairs, &mut self.fixed]
     }
+}
+
+/// Some of the step's contacts, solved together: an island's (with its balls, as places in
+/// the solver's copy), or a single pair's.
+#[derive(Debug)]
+struct ContactSet<'a> {
+    balls: &'a [usize],
+    pairs: &'a mut [PairContact],
+    fixed: &'a mut [FixedContact],
 }
 
 /// The next place in `range`, which grows by it.
@@ -213,120 +345,69 @@ impl ContactSolver {
     /// A solver for ball-ball contacts that keep `restitution` of the approach speed.
     pub fn new(restitution: f64) -> ContactSolver {
         ContactSolver {
-            restitution,
-            grid: Grid::new(),
-            pairs: Vec::new(),
-            fixed: Vec::new(),
-            remembered: Vec::new(),
-            local: Vec::new(),
-            places: Vec::new(),
-            unlisted: Vec::new(),
-            active: Vec::new(),
-            islands: Vec::new(),
-            parent: Vec::new(),
-            island_of: Vec::new(),
-            with_contact: Vec::new(),
-            untouched: Vec::new(),
-            spare_pairs: Vec::new(),
-            spare_fixed: Vec::new(),
-            saved: Vec::new(),
+            settings: Settings { restitution },
+            memory: WarmStartMemory::default(),
+            scratch: Scratch::default(),
         }
     }
 
     /// Advances every ball one frame (its substeps) under `effects`, with `motion`'s
     /// integrator and iterations; trails are the caller's business.
     pub fn step(&mut self, scene_balls: &mut [Ball], effects: &Effects, motion: &Motion) {
-        let (steps, whole) = motion.plan(effects);
-        let iterations = motion.iterations;
-        let forces = Forces::new(effects).split(steps * iterations);
-        let gravity = effects.gravity.map_or(0.0, |[gx, gy]| maths::hypot(gx, gy));
-        let sub = SubStep {
-            h: forces.dt,
-            loaded: gravity > 0.0,
-            rest_speed: REST_SPEED * gravity / LESSON_GRAVITY,
-        };
-        let dt = 1.0 / f64::from(steps);
-        // Without gravity or drag every ball flies in a straight line between contacts.
-        let free = whole.gravity.is_none() && whole.drag.is_none();
-        for _ in 0..steps {
+        let stepping = Stepping::new(effects, motion);
+        for _ in 0..stepping.steps {
             tally(Work::Contacts);
-            self.find(scene_balls, effects, dt);
-            self.recall();
-            self.sort_into_islands(scene_balls.len());
+            self.prepare(scene_balls, effects, stepping.dt);
             // The solver works on its own copy of the balls, in the grid's order: contacts
             // then touch balls close together in memory, which keeps 100,000 balls fast.
-            let mut local = std::mem::take(&mut self.local);
-            let balls = &mut local[..];
-            // Islands share no ball, so each is solved on its own, all its sub-steps at once,
-            // while its few balls and contacts are in the cache.
-            for island in &self.islands {
-                let active = &self.active[island.balls.clone()];
-                let pairs = &mut self.pairs[island.pairs.clone()];
-                let fixed = &mut self.fixed[island.fixed.clone()];
-                let island = (active, &mut *pairs, &mut *fixed);
-                let setting = (motion, &whole, sub);
-                if free && solve_free_island(island, balls, setting, &mut self.saved) {
-                    continue;
-                }
-                for _ in 0..iterations {
-                    for &i in active {
-                        motion.integrator.kick_before(&mut balls[i], &forces);
-                    }
-                    warm_start(pairs, fixed, balls);
-                    solve_velocities(pairs, fixed, balls, sub);
-                    for &i in active {
-                        motion.integrator.fly(&mut balls[i], &forces, forces.dt);
-                        motion.integrator.kick_after(&mut balls[i], &forces);
-                    }
-                    solve_positions(pairs, fixed, balls, Push::Part);
-                }
-            }
-            // A ball that can touch nothing in this step takes it in one go, as in the lesson.
-            // They are listed first without a branch (about half the balls of a gas, at
-            // random, which a branch would mispredict).
-            self.untouched.resize(local.len(), 0);
-            let mut count = 0;
-            for (k, &island) in self.island_of.iter().enumerate() {
-                self.untouched[count] = k;
-                count += usize::from(island == NO_ISLAND);
-            }
-            for &k in &self.untouched[..count] {
-                motion.integrator.step(&mut local[k], &whole);
-            }
+            let mut local = std::mem::take(&mut self.scratch.local);
+            self.scratch.solve_islands(&mut local, &stepping);
+            self.scratch.move_untouched(&mut local, &stepping);
             let walls = effects.walls.as_ref();
-            for (copy, &i) in local.iter_mut().zip(self.grid.order()) {
+            let order = self.scratch.grid.order();
+            for (copy, &i) in local.iter_mut().zip(order) {
                 copy_back(copy, &mut scene_balls[i], walls);
             }
-            self.settle_unlisted(&mut local, sub, |copy, k| {
-                copy_back(copy, &mut scene_balls[self.grid.order()[k]], walls);
+            self.restitution(&mut local, stepping.sub, |copy, k| {
+                copy_back(copy, &mut scene_balls[order[k]], walls);
             });
-            self.local = local;
-            self.remember();
+            self.scratch.local = local;
+            self.store();
         }
     }
 
-    /// A ball struck within the step leaves in a new direction and can run into a neighbour
-    /// it was not heading for when the contacts were found: that pair is not among them. Each
-    /// such pair that ends the step overlapping beyond the slop is set apart to touching
-    /// (positions only) and bounces now, by the same rule as any contact, so that no overlap
-    /// outlives the step. Momentum is kept and kinetic energy does not rise.
-    /// `moved` hears of each ball it moves (by its place).
-    fn settle_unlisted(
-        &self,
-        balls: &mut [Body],
-        sub: SubStep,
-        mut moved: impl FnMut(&Body, usize),
-    ) {
-        for &[a, b] in &self.unlisted {
+    /// Prepares the step `dt`: finds its contacts, gives each the impulse it ended the last
+    /// step with, and sorts them into islands.
+    fn prepare(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
+        let scratch = &mut self.scratch;
+        scratch.find(balls, effects, dt, self.settings.restitution);
+        self.memory.recall(&mut scratch.pairs, &mut scratch.fixed);
+        scratch.sort_into_islands(balls.len());
+    }
+
+    /// The bounces left after the sub-steps. A ball struck within the step leaves in a new
+    /// direction and can run into a neighbour it was not heading for when the contacts were
+    /// found: that pair is not among them. Each such pair that ends the step overlapping
+    /// beyond the slop is set apart to touching (positions only) and bounces now, by the
+    /// same rule as any contact, so that no overlap outlives the step. Momentum is kept and
+    /// kinetic energy does not rise. `moved` hears of each ball it moves (by its place).
+    fn restitution(&self, balls: &mut [Body], sub: SubStep, mut moved: impl FnMut(&Body, usize)) {
+        let order = self.scratch.grid.order();
+        for &[a, b] in &self.scratch.unlisted {
             let (a, b) = (a as usize, b as usize);
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
             if !deeper_than_slop(ball_a, ball_b, ball_a.radius + ball_b.radius) {
                 continue; // the common case, without a square root
             }
-            let order = self.grid.order();
             let gap = gap_between(balls, order, a, b);
-            let mut contact = pair_contact(balls, order, self.restitution, (a, b), gap);
-            solve_positions(std::slice::from_ref(&contact), &[], balls, Push::Whole);
+            let restitution = self.settings.restitution;
+            let mut contact = pair_contact(balls, order, restitution, a, b, gap);
+            let pair = ContactSet {
+                balls: &[],
+                pairs: std::slice::from_mut(&mut contact),
+                fixed: &mut [],
+            };
+            pair.relax(balls, Push::Whole);
             contact.state.separation = 0.0;
             let (ball_a, ball_b) = two(balls, a, b);
             contact.solve_velocity(ball_a, ball_b, sub);
@@ -335,36 +416,65 @@ impl ContactSolver {
         }
     }
 
+    /// Stores each contact's impulse in the warm-start memory, for the next step.
+    fn store(&mut self) {
+        let scratch = &self.scratch;
+        self.memory.store(&scratch.pairs, &scratch.fixed);
+    }
+}
+
+impl WarmStartMemory {
+    /// Gives each contact the impulse it ended the last step with (0 if it is new).
+    fn recall(&self, pairs: &mut [PairContact], fixed: &mut [FixedContact]) {
+        let remembered = &self.impulses;
+        let states = pairs.iter_mut().map(|c| &mut c.state);
+        for state in states.chain(fixed.iter_mut().map(|c| &mut c.state)) {
+            state.impulse = remembered
+                .binary_search_by_key(&state.key, |&(key, _)| key)
+                .map_or(0.0, |found| remembered[found].1);
+        }
+    }
+
+    /// Keeps the contacts' impulses (those above 0) for the next step's warm start.
+    fn store(&mut self, pairs: &[PairContact], fixed: &[FixedContact]) {
+        self.impulses.clear();
+        let states = pairs.iter().map(|c| &c.state);
+        self.impulses.extend(
+            states
+                .chain(fixed.iter().map(|c| &c.state))
+                .map(|state| (state.key, state.impulse))
+                .filter(|&(_, impulse)| impulse > 0.0),
+        );
+        self.impulses.sort_unstable_by_key(|&(key, _)| key);
+    }
+}
+
+impl Scratch {
     /// This step's contacts, each only if it can touch within the step `dt`: each ball's
     /// walls and floors, as the balls are copied into the grid's order; then the ball pairs
-    /// from the grid, in its order.
-    fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
-        let gravity = effects.gravity.map_or(0.0, |[gx, gy]| maths::hypot(gx, gy));
-        // How far gravity alone can move a ball in the step.
-        let fall = gravity * dt * dt;
-        // How far each ball can get in this step, and a little more, so that it stops at a
-        // surface instead of passing into it, and a resting pair is found again next step.
-        let margin = |ball: &Ball| {
-            (ball.vx * ball.vx + ball.vy * ball.vy).sqrt() * dt + fall + PAIR_MARGIN * ball.radius
-        };
-        // Whether a contact at `separation` closing at `approach` (negative: closing) can
-        // touch within the step, with `slack` to spare.
-        let can_touch = |separation: f64, approach: f64, fall: f64, slack: f64| {
-            separation + approach.min(0.0) * dt - fall < slack
-        };
-        self.grid.rebuild_with_margins(balls, margin);
-        // Each ball's copy in the grid's order, and its walls and floors, in one pass.
+    /// from the grid, in its order, with `restitution`.
+    fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64, restitution: f64) {
+        let lookahead = Lookahead::new(effects, dt);
+        self.grid
+            .rebuild_with_margins(balls, |ball| lookahead.margin(ball));
+        self.copy_and_find_fixed(balls, effects, lookahead);
+        self.find_pairs(lookahead, restitution);
+    }
+
+    /// Copies each ball into `local` in the grid's order, and finds its walls and floors,
+    /// in one pass.
+    fn copy_and_find_fixed(&mut self, balls: &[Ball], effects: &Effects, lookahead: Lookahead) {
         self.local.clear();
         self.fixed.clear();
         for (k, &i) in self.grid.order().iter().enumerate() {
             let ball = &Body::of(&balls[i]);
             self.local.push(*ball);
-            let centre = [ball.x, ball.y];
-            let mut touch = |id: u64, normal: [f64; 2], surface: f64, restitution: f64| {
+            let centre = ball.position;
+            let mut touch = |id: u64, normal: Vec2, surface: f64, restitution: f64| {
                 let offset = surface + ball.radius;
-                let separation = dot(centre, normal) - offset;
-                let approach = dot([ball.vx, ball.vy], normal);
-                if can_touch(separation, approach, fall, PAIR_MARGIN * ball.radius) {
+                let separation = centre.dot(normal) - offset;
+                let approach = ball.velocity.dot(normal);
+                if lookahead.can_touch(separation, approach, PAIR_MARGIN * ball.radius) {
                     self.fixed.push(FixedContact {
                         ball: k,
                         offset,
@@ -372,7 +482,7 @@ impl ContactSolver {
                             normal,
                             separation,
                             restitution,
-                            mass(ball),
+                            mass(ball.radius),
                             (i as u64) << 32 | (u64::from(u32::MAX) - id),
                         ),
                     });
@@ -382,10 +492,10 @@ impl ContactSolver {
                 tally(Work::Walls);
                 // Each wall as a line: its inward normal, and `normal · point` on it.
                 let sides = [
-                    ([1.0, 0.0], 0.0),
-                    ([-1.0, 0.0], -walls.width),
-                    ([0.0, 1.0], 0.0),
-                    ([0.0, -1.0], -walls.height),
+                    (Vec2::new(1.0, 0.0), 0.0),
+                    (Vec2::new(-1.0, 0.0), -walls.width),
+                    (Vec2::new(0.0, 1.0), 0.0),
+                    (Vec2::new(0.0, -1.0), -walls.height),
                 ];
                 for (id, (normal, surface)) in sides.into_iter().enumerate() {
                     touch(id as u64, normal, surface, walls.damping);
@@ -393,17 +503,22 @@ impl ContactSolver {
             }
             for (k, floor) in effects.floors.iter().enumerate() {
                 tally(Work::Floor);
-                let (normal, distance) = floor.nearest(centre);
+                let (normal, distance) = floor.nearest(centre.to_array());
+                let normal = Vec2::from(normal);
                 touch(
                     4 + k as u64,
                     normal,
-                    dot(centre, normal) - distance,
+                    centre.dot(normal) - distance,
                     floor.damping,
                 );
             }
         }
-        let (balls, order) = (&self.local, self.grid.order());
+    }
 
+    /// The ball pairs the grid finds that can touch within the step, in its order, with
+    /// `restitution`; the others are kept aside as `unlisted`.
+    fn find_pairs(&mut self, lookahead: Lookahead, restitution: f64) {
+        let (balls, order) = (&self.local, self.grid.order());
         // The grid names each pair by the balls' places in its order, which are their places
         // in `local`: `a < b`, close together in memory, no lookup needed.
         self.pairs.clear();
@@ -413,13 +528,13 @@ impl ContactSolver {
         for &[a, b] in &self.places {
             let (a, b) = (a as usize, b as usize);
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
-            let gap @ (separation, normal) = gap_between(balls, order, a, b);
-            let approach = dot([ball_b.vx - ball_a.vx, ball_b.vy - ball_a.vy], normal);
+            let gap = gap_between(balls, order, a, b);
+            let approach = (ball_b.velocity - ball_a.velocity).dot(gap.normal);
             // Both balls fall alike, but a ball pushed from above can close the gap by as
             // much as gravity moves it.
             let slack = PAIR_MARGIN * (ball_a.radius + ball_b.radius) / 2.0;
-            if can_touch(separation, approach, fall, slack) {
-                let contact = pair_contact(balls, order, self.restitution, (a, b), gap);
+            if lookahead.can_touch(gap.separation, approach, slack) {
+                let contact = pair_contact(balls, order, restitution, a, b, gap);
                 self.pairs.push(contact);
             } else {
                 self.unlisted.push([a as u32, b as u32]);
@@ -439,12 +554,41 @@ impl ContactSolver {
             let (a, b) = (root(parent, contact.a), root(parent, contact.b));
             parent[a.max(b)] = a.min(b);
         }
-        // Number the islands in the order their contacts were found, visiting only the balls
-        // with a contact (the rest stay at `NO_ISLAND`), and count each island's balls.
-        // Islands share no ball and a ball's own motion does not depend on the others', so
-        // neither the islands' order nor their balls' changes a number: only each island's
-        // contacts must keep the order they were found in.
-        let island_of = &mut self.island_of;
+        self.number_islands(count);
+        // Turn the counts into empty ranges where each island's balls and contacts will be,
+        // one island after another; placing one extends its island's range (a counting sort).
+        let mut starts = [0; 3];
+        for island in &mut self.islands {
+            for (range, start) in island.ranges().into_iter().zip(&mut starts) {
+                let count = range.end;
+                *range = *start..*start;
+                *start += count;
+            }
+        }
+        let (islands, island_of) = (&mut self.islands, &self.island_of);
+        self.active.resize(self.with_contact.len(), 0);
+        for &ball in &self.with_contact {
+            self.active[place(&mut islands[island_of[ball]].balls)] = ball;
+        }
+        self.spare_pairs.clone_from(&self.pairs);
+        for contact in &self.spare_pairs {
+            self.pairs[place(&mut islands[island_of[contact.a]].pairs)] = *contact;
+        }
+        self.spare_fixed.clone_from(&self.fixed);
+        for contact in &self.spare_fixed {
+            self.fixed[place(&mut islands[island_of[contact.ball]].fixed)] = *contact;
+        }
+    }
+
+    /// Numbers the islands of the union–find tree `parent` in the order their contacts were
+    /// found, visiting only the balls with a contact (the rest stay at `NO_ISLAND`), and
+    /// counts each island's balls and contacts (in the ends of its ranges).
+    ///
+    /// Islands share no ball and a ball's own motion does not depend on the others', so
+    /// neither the islands' order nor their balls' changes a number: only each island's
+    /// contacts must keep the order they were found in.
+    fn number_islands(&mut self, count: usize) {
+        let (parent, island_of) = (&mut self.parent, &mut self.island_of);
         island_of.clear();
         island_of.resize(count, NO_ISLAND);
         self.islands.clear();
@@ -476,59 +620,48 @@ impl ContactSolver {
         for contact in &self.fixed {
             self.islands[island_of[contact.ball]].fixed.end += 1;
         }
-        // Turn the counts into empty ranges where each island's balls and contacts will be,
-        // one island after another; placing one extends its island's range (a counting sort).
-        let mut starts = [0; 3];
-        for island in &mut self.islands {
-            for (range, start) in island.ranges().into_iter().zip(&mut starts) {
-                let count = range.end;
-                *range = *start..*start;
-                *start += count;
+    }
+
+    /// Solves every island, one after another: touch by touch if `stepping` is free and the
+    /// island allows, in sub-steps otherwise. Islands share no ball, so each is solved on
+    /// its own, all its sub-steps at once, while its few balls and contacts are in the cache.
+    fn solve_islands(&mut self, balls: &mut [Body], stepping: &Stepping) {
+        for island in &self.islands {
+            let mut set = ContactSet {
+                balls: &self.active[island.balls.clone()],
+                pairs: &mut self.pairs[island.pairs.clone()],
+                fixed: &mut self.fixed[island.fixed.clone()],
+            };
+            if stepping.free && set.solve_free_island(balls, stepping, &mut self.saved) {
+                continue;
             }
-        }
-        let islands = &mut self.islands;
-        self.active.resize(self.with_contact.len(), 0);
-        for &ball in &self.with_contact {
-            self.active[place(&mut islands[island_of[ball]].balls)] = ball;
-        }
-        self.spare_pairs.clone_from(&self.pairs);
-        for contact in &self.spare_pairs {
-            self.pairs[place(&mut islands[island_of[contact.a]].pairs)] = *contact;
-        }
-        self.spare_fixed.clone_from(&self.fixed);
-        for contact in &self.spare_fixed {
-            self.fixed[place(&mut islands[island_of[contact.ball]].fixed)] = *contact;
+            set.solve_in_substeps(balls, stepping);
         }
     }
 
-    /// Gives each contact the impulse it ended the last step with (0 if it is new).
-    fn recall(&mut self) {
-        let remembered = &self.remembered;
-        let states = self.pairs.iter_mut().map(|c| &mut c.state);
-        for state in states.chain(self.fixed.iter_mut().map(|c| &mut c.state)) {
-            state.impulse = remembered
-                .binary_search_by_key(&state.key, |&(key, _)| key)
-                .map_or(0.0, |found| remembered[found].1);
+    /// A ball that can touch nothing in this step takes it in one go, as in the lesson.
+    /// They are listed first without a branch (about half the balls of a gas, at random,
+    /// which a branch would mispredict).
+    fn move_untouched(&mut self, balls: &mut [Body], stepping: &Stepping) {
+        self.untouched.resize(balls.len(), 0);
+        let mut count = 0;
+        for (k, &island) in self.island_of.iter().enumerate() {
+            self.untouched[count] = k;
+            count += usize::from(island == NO_ISLAND);
         }
-    }
-
-    /// Keeps the impulses for the next step's warm start.
-    fn remember(&mut self) {
-        self.remembered.clear();
-        let states = self.pairs.iter().map(|c| &c.state);
-        self.remembered.extend(
-            states
-                .chain(self.fixed.iter().map(|c| &c.state))
-                .map(|state| (state.key, state.impulse))
-                .filter(|&(_, impulse)| impulse > 0.0),
-        );
-        self.remembered.sort_unstable_by_key(|&(key, _)| key);
+        for &k in &self.untouched[..count] {
+            stepping
+                .motion
+                .integrator
+                .step(&mut balls[k], &stepping.whole);
+        }
     }
 }
 
 /// Puts the solver's `copy` of a ball back into the scene's `ball`, inside the `walls`.
 fn copy_back(copy: &Body, ball: &mut Ball, walls: Option<&Walls>) {
-    (ball.x, ball.y, ball.vx, ball.vy) = (copy.x, copy.y, copy.vx, copy.vy);
+    let (position, velocity) = (copy.position, copy.velocity);
+    (ball.x, ball.y, ball.vx, ball.vy) = (position.x, position.y, velocity.x, velocity.y);
     if let Some(walls) = walls {
         ball.keep_inside(walls);
     }
@@ -536,156 +669,224 @@ fn copy_back(copy: &Body, ball: &mut Ball, walls: Option<&Walls>) {
 
 /// The gap between balls `a` and `b` (places in `balls`, the grid's order; `order` gives
 /// their scene indices) and the normal from `a` to `b`.
-fn gap_between(balls: &[Body], order: &[usize], a: usize, b: usize) -> (f64, [f64; 2]) {
+fn gap_between(balls: &[Body], order: &[usize], a: usize, b: usize) -> Gap {
     let (ball_a, ball_b) = (&balls[a], &balls[b]);
     // The scene's index of the later ball names the normal of balls at one spot.
     let coincident = || coincident_normal(order[a].max(order[b]));
     pair_gap(ball_a, ball_b, ball_a.radius + ball_b.radius, coincident)
 }
 
-/// The contact between balls `a` and `b` (as in [`gap_between`]), `separation` apart along
-/// `normal`.
+/// The contact between balls `a` and `b` (as in [`gap_between`]) with `restitution`, `gap`
+/// apart.
 fn pair_contact(
     balls: &[Body],
     order: &[usize],
     restitution: f64,
-    (a, b): (usize, usize),
-    (separation, normal): (f64, [f64; 2]),
+    a: usize,
+    b: usize,
+    gap: Gap,
 ) -> PairContact {
     let (ball_a, ball_b) = (&balls[a], &balls[b]);
     // The key names the pair by its scene indices, which do not change.
     let (i, j) = (order[a].min(order[b]), order[a].max(order[b]));
     let key = (j as u64) << 32 | i as u64;
-    let (mass_a, mass_b) = (mass(ball_a), mass(ball_b));
+    let (mass_a, mass_b) = (mass(ball_a.radius), mass(ball_b.radius));
     let mass = mass_a * mass_b / (mass_a + mass_b);
     PairContact {
         a,
         b,
         reach: ball_a.radius + ball_b.radius,
-        state: ContactState::new(normal, separation, restitution, mass, key),
+        state: ContactState::new(gap.normal, gap.separation, restitution, mass, key),
         inverse_a: 1.0 / mass_a,
         inverse_b: 1.0 / mass_b,
     }
 }
 
-/// Applies each contact's impulse of the last sub-step again, and measures its gap anew.
-fn warm_start(pairs: &mut [PairContact], fixed: &mut [FixedContact], balls: &mut [Body]) {
-    for contact in pairs.iter_mut() {
-        let (a, b) = two(balls, contact.a, contact.b);
-        let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
-        (contact.state.separation, contact.state.normal) = (separation, normal);
-        contact.push_velocities(a, b, contact.state.impulse);
+impl ContactSet<'_> {
+    /// The island's `iterations` sub-steps, Box2D v3's soft step: each integrates the
+    /// velocities, warm starts, solves, integrates the positions and relaxes.
+    fn solve_in_substeps(&mut self, balls: &mut [Body], stepping: &Stepping) {
+        for _ in 0..stepping.motion.iterations {
+            self.integrate_velocities(balls, stepping);
+            self.warm_start(balls);
+            self.solve(balls, stepping.sub);
+            self.integrate_positions(balls, stepping);
+            self.relax(balls, Push::Part);
+        }
     }
-    for contact in fixed.iter_mut() {
-        let ball = &mut balls[contact.ball];
-        contact.state.separation = contact.gap(ball);
-        let impulse = contact.state.impulse / contact.state.mass;
-        ball.vx += impulse * contact.state.normal[0];
-        ball.vy += impulse * contact.state.normal[1];
-    }
-}
 
-/// Solves an island touch by touch, if it can. When no force acts (the caller checks) the
-/// balls fly in straight lines, so when each contact touches has a closed form: the island
-/// flies to the first touch, that contact alone is solved there, and so on to the end of the
-/// step, instead of every contact once per sub-step.
-///
-/// Balls that start the step overlapping beyond the slop are first set apart, to touching
-/// (positions only): in a gas that is nearly always a pair the last step did not list
-/// because it was not closing, whose balls then met after one of them was struck. Returns
-/// `false`, with the balls as they were, when a contact still overlaps after that (a ball
-/// pushed into a third: the sub-steps' gentler position passes sort that out) or the island
-/// has more than [`TOUCHES_PER_CONTACT`] touches per contact (a cluster that keeps
-/// colliding): those take the sub-steps. `saved` is scratch space.
-fn solve_free_island(
-    island: (&[usize], &mut [PairContact], &mut [FixedContact]),
-    balls: &mut [Body],
-    (motion, whole, sub): (&Motion, &Forces, SubStep),
-    saved: &mut Vec<[f64; 4]>,
-) -> bool {
-    let (active, pairs, fixed) = island;
-    saved.clear();
-    saved.extend(active.iter().map(|&i| {
-        let ball = &balls[i];
-        [ball.x, ball.y, ball.vx, ball.vy]
-    }));
-    let fly = |balls: &mut [Body], time: f64| {
-        for &i in active {
-            motion.integrator.fly(&mut balls[i], whole, time);
+    /// The integrator adds a sub-step's gravity and drag to each ball's velocity (before
+    /// the flight, for the integrators that kick first).
+    fn integrate_velocities(&self, balls: &mut [Body], stepping: &Stepping) {
+        for &i in self.balls {
+            stepping
+                .motion
+                .integrator
+                .kick_before(&mut balls[i], &stepping.forces);
         }
-    };
-    // Positions only, so no kinetic energy is added; an approaching pair then touches now.
-    solve_positions(pairs, fixed, balls, Push::Whole);
-    let mut left = whole.dt;
-    for _ in 0..TOUCHES_PER_CONTACT * (pairs.len() + fixed.len()) {
-        let Some((first, touch)) = first_touch(pairs, fixed, balls) else {
-            break;
-        };
-        if touch >= left {
-            fly(balls, left);
-            return true;
+    }
+
+    /// Each ball flies a sub-step with its solved velocity (then takes the kick of the
+    /// integrators that kick after).
+    fn integrate_positions(&self, balls: &mut [Body], stepping: &Stepping) {
+        let (integrator, forces) = (stepping.motion.integrator, &stepping.forces);
+        for &i in self.balls {
+            integrator.fly(&mut balls[i], forces, forces.dt);
+            integrator.kick_after(&mut balls[i], forces);
         }
-        fly(balls, touch);
-        left -= touch;
-        // The rest of the step after the touch is the sub-step the contact is solved for.
-        let sub = SubStep { h: left, ..sub };
-        // They touch now: a rounding error's gap must not spare them the bounce.
-        if first < pairs.len() {
-            let contact = &mut pairs[first];
+    }
+
+    /// Applies each contact's impulse of the last sub-step again, and measures its gap anew.
+    fn warm_start(&mut self, balls: &mut [Body]) {
+        for contact in self.pairs.iter_mut() {
             let (a, b) = two(balls, contact.a, contact.b);
-            let (separation, normal) = pair_gap(a, b, contact.reach, || contact.state.normal);
-            (contact.state.separation, contact.state.normal) = (separation.min(0.0), normal);
+            let gap = pair_gap(a, b, contact.reach, || contact.state.normal);
+            (contact.state.separation, contact.state.normal) = (gap.separation, gap.normal);
+            contact.push_velocities(a, b, contact.state.impulse);
+        }
+        for contact in self.fixed.iter_mut() {
+            let ball = &mut balls[contact.ball];
+            contact.state.separation = contact.gap(ball);
+            let impulse = contact.state.impulse / contact.state.mass;
+            ball.velocity += impulse * contact.state.normal;
+        }
+    }
+
+    /// The velocity pass: one Gauss–Seidel pass over every contact's velocity.
+    fn solve(&mut self, balls: &mut [Body], sub: SubStep) {
+        for contact in self.pairs.iter_mut() {
+            let (a, b) = two(balls, contact.a, contact.b);
+            contact.solve_velocity(a, b, sub);
+        }
+        for contact in self.fixed.iter_mut() {
+            contact.solve_velocity(&mut balls[contact.ball], sub);
+        }
+    }
+
+    /// The position pass: one Gauss–Seidel pass that pushes contacts overlapping beyond the
+    /// slop apart by `push`, positions only.
+    fn relax(&self, balls: &mut [Body], push: Push) {
+        for contact in self.pairs.iter() {
+            let (a, b) = two(balls, contact.a, contact.b);
+            if !deeper_than_slop(a, b, contact.reach) {
+                continue; // the common case, without a square root
+            }
+            let allowed = SLOP * contact.reach / 2.0;
+            let gap = pair_gap(a, b, contact.reach, || contact.state.normal);
+            if gap.separation < -allowed {
+                // Each ball moves its share: the lighter one more.
+                let push = push.distance(gap.separation, allowed) * contact.state.mass;
+                let (share_a, share_b) = (push * contact.inverse_a, push * contact.inverse_b);
+                a.position -= share_a * gap.normal;
+                b.position += share_b * gap.normal;
+            }
+        }
+        for contact in self.fixed.iter() {
+            let ball = &mut balls[contact.ball];
+            let separation = contact.gap(ball);
+            let allowed = SLOP * ball.radius;
+            if separation < -allowed {
+                let push = push.distance(separation, allowed);
+                ball.position += push * contact.state.normal;
+            }
+        }
+    }
+
+    /// Solves an island touch by touch, if it can. When no force acts (the caller checks) the
+    /// balls fly in straight lines, so when each contact touches has a closed form: the
+    /// island flies to the first touch, that contact alone is solved there, and so on to the
+    /// end of the step, instead of every contact once per sub-step.
+    ///
+    /// Balls that start the step overlapping beyond the slop are first set apart, to touching
+    /// (positions only): in a gas that is nearly always a pair the last step did not list
+    /// because it was not closing, whose balls then met after one of them was struck. Returns
+    /// `false`, with the balls as they were, when a contact still overlaps after that (a ball
+    /// pushed into a third: the sub-steps' gentler position passes sort that out) or the
+    /// island has more than [`TOUCHES_PER_CONTACT`] touches per contact (a cluster that keeps
+    /// colliding): those take the sub-steps. `saved` is scratch space.
+    fn solve_free_island(
+        &mut self,
+        balls: &mut [Body],
+        stepping: &Stepping,
+        saved: &mut Vec<(Vec2, Vec2)>,
+    ) -> bool {
+        let (active, whole) = (self.balls, &stepping.whole);
+        saved.clear();
+        saved.extend(
+            active
+                .iter()
+                .map(|&i| (balls[i].position, balls[i].velocity)),
+        );
+        let fly = |balls: &mut [Body], time: f64| {
+            for &i in active {
+                stepping.motion.integrator.fly(&mut balls[i], whole, time);
+            }
+        };
+        // Positions only, so no kinetic energy is added; an approaching pair then touches now.
+        self.relax(balls, Push::Whole);
+        let mut left = whole.dt;
+        for _ in 0..TOUCHES_PER_CONTACT * (self.pairs.len() + self.fixed.len()) {
+            let Some((first, touch)) = self.first_touch(balls) else {
+                break;
+            };
+            if touch >= left {
+                fly(balls, left);
+                return true;
+            }
+            fly(balls, touch);
+            left -= touch;
+            // The rest of the step after the touch is the sub-step the contact is solved for.
+            self.solve_touch(
+                first,
+                balls,
+                SubStep {
+                    h: left,
+                    ..stepping.sub
+                },
+            );
+        }
+        for (&i, &(position, velocity)) in active.iter().zip(saved.iter()) {
+            (balls[i].position, balls[i].velocity) = (position, velocity);
+        }
+        false
+    }
+
+    /// Solves contact `first` (of the pairs then the fixed contacts, numbered in that
+    /// order), which touches now, for the sub-step `sub`.
+    fn solve_touch(&mut self, first: usize, balls: &mut [Body], sub: SubStep) {
+        // They touch now: a rounding error's gap must not spare them the bounce.
+        if first < self.pairs.len() {
+            let contact = &mut self.pairs[first];
+            let (a, b) = two(balls, contact.a, contact.b);
+            let gap = pair_gap(a, b, contact.reach, || contact.state.normal);
+            (contact.state.separation, contact.state.normal) =
+                (gap.separation.min(0.0), gap.normal);
             contact.solve_velocity(a, b, sub);
         } else {
-            let contact = &mut fixed[first - pairs.len()];
+            let contact = &mut self.fixed[first - self.pairs.len()];
             let ball = &mut balls[contact.ball];
             contact.state.separation = contact.gap(ball).min(0.0);
             contact.solve_velocity(ball, sub);
         }
     }
-    for (&i, &[x, y, vx, vy]) in active.iter().zip(saved.iter()) {
-        let ball = &mut balls[i];
-        (ball.x, ball.y, ball.vx, ball.vy) = (x, y, vx, vy);
-    }
-    false
-}
 
-/// The contact of `pairs` then `fixed` (numbered in that order) that touches first, and when;
-/// `None` if one overlaps beyond the slop.
-fn first_touch(
-    pairs: &[PairContact],
-    fixed: &[FixedContact],
-    balls: &[Body],
-) -> Option<(usize, f64)> {
-    let touches = pairs.iter().map(|contact| contact.touch_time(balls));
-    let touches = touches.chain(
-        fixed
-            .iter()
-            .map(|contact| contact.touch_time(&balls[contact.ball])),
-    );
-    let mut first = (0, f64::INFINITY);
-    for (k, touch) in touches.enumerate() {
-        let touch = touch?;
-        if touch < first.1 {
-            first = (k, touch);
+    /// The contact of the pairs then the fixed contacts (numbered in that order) that
+    /// touches first, and when; `None` if one overlaps beyond the slop.
+    fn first_touch(&self, balls: &[Body]) -> Option<(usize, f64)> {
+        let touches = self.pairs.iter().map(|contact| contact.touch_time(balls));
+        let touches = touches.chain(
+            self.fixed
+                .iter()
+                .map(|contact| contact.touch_time(&balls[contact.ball])),
+        );
+        let mut first = (0, f64::INFINITY);
+        for (k, touch) in touches.enumerate() {
+            let touch = touch?;
+            if touch < first.1 {
+                first = (k, touch);
+            }
         }
-    }
-    Some(first)
-}
-
-/// One Gauss–Seidel pass over every contact's velocity.
-fn solve_velocities(
-    pairs: &mut [PairContact],
-    fixed: &mut [FixedContact],
-    balls: &mut [Body],
-    sub: SubStep,
-) {
-    for contact in pairs.iter_mut() {
-        let (a, b) = two(balls, contact.a, contact.b);
-        contact.solve_velocity(a, b, sub);
-    }
-    for contact in fixed.iter_mut() {
-        contact.solve_velocity(&mut balls[contact.ball], sub);
+        Some(first)
     }
 }
 
@@ -710,46 +911,8 @@ impl Push {
     }
 }
 
-/// One Gauss–Seidel pass that pushes contacts overlapping beyond the slop apart by `push`,
-/// positions only.
-fn solve_positions(pairs: &[PairContact], fixed: &[FixedContact], balls: &mut [Body], push: Push) {
-    for contact in pairs {
-        let (a, b) = two(balls, contact.a, contact.b);
-        if !deeper_than_slop(a, b, contact.reach) {
-            continue; // the common case, without a square root
-        }
-        let allowed = SLOP * contact.reach / 2.0;
-        let (separation, [nx, ny]) = pair_gap(a, b, contact.reach, || contact.state.normal);
-        if separation < -allowed {
-            // Each ball moves its share: the lighter one more.
-            let push = push.distance(separation, allowed) * contact.state.mass;
-            let (share_a, share_b) = (push * contact.inverse_a, push * contact.inverse_b);
-            a.x -= share_a * nx;
-            a.y -= share_a * ny;
-            b.x += share_b * nx;
-            b.y += share_b * ny;
-        }
-    }
-    for contact in fixed {
-        let ball = &mut balls[contact.ball];
-        let separation = contact.gap(ball);
-        let allowed = SLOP * ball.radius;
-        if separation < -allowed {
-            let push = push.distance(separation, allowed);
-            ball.x += push * contact.state.normal[0];
-            ball.y += push * contact.state.normal[1];
-        }
-    }
-}
-
 impl ContactState {
-    fn new(
-        normal: [f64; 2],
-        separation: f64,
-        restitution: f64,
-        mass: f64,
-        key: u64,
-    ) -> ContactState {
+    fn new(normal: Vec2, separation: f64, restitution: f64, mass: f64, key: u64) -> ContactState {
         ContactState {
             normal,
             separation,
@@ -762,7 +925,7 @@ impl ContactState {
 
     /// The velocity pass for one contact whose relative normal speed is `speed` (negative:
     /// closing): updates the running total and returns the impulse to apply now.
-    fn solve(&mut self, speed: f64, sub: SubStep) -> f64 {
+    fn impulse_change(&mut self, speed: f64, sub: SubStep) -> f64 {
         // It bounces if it touches within the sub-step closing fast enough for its rebound,
         // `e` times the approach speed now, to beat the rest speed. Now, not when the contact
         // was found: a ball struck in this step passes the blow on to the next (a resting
@@ -786,9 +949,8 @@ impl ContactState {
 impl PairContact {
     /// The velocity pass for this contact.
     fn solve_velocity(&mut self, a: &mut Body, b: &mut Body, sub: SubStep) {
-        let [nx, ny] = self.state.normal;
-        let speed = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
-        let change = self.state.solve(speed, sub);
+        let speed = (b.velocity - a.velocity).dot(self.state.normal);
+        let change = self.state.impulse_change(speed, sub);
         self.push_velocities(a, b, change);
     }
 
@@ -796,21 +958,21 @@ impl PairContact {
     /// now); `None` if they overlap by more than the slop, which the position pass handles.
     fn touch_time(&self, balls: &[Body]) -> Option<f64> {
         let (a, b) = (&balls[self.a], &balls[self.b]);
-        let p = [b.x - a.x, b.y - a.y];
-        let v = [b.vx - a.vx, b.vy - a.vy];
+        let p = b.position - a.position;
+        let v = b.velocity - a.velocity;
         // |p + v·t| = reach: a quadratic in t, whose smaller root is the touch.
-        let gap = dot(p, p) - self.reach * self.reach;
-        let closing = dot(p, v);
+        let gap = p.length_squared() - self.reach * self.reach;
+        let closing = p.dot(v);
         if gap <= 0.0 {
             // A pair that has just bounced touches still, or overlaps by a rounding error.
             let closest = self.reach * (1.0 - SLOP / 2.0);
             return match closing {
-                _ if dot(p, p) < closest * closest => None,
+                _ if p.length_squared() < closest * closest => None,
                 c if c < 0.0 => Some(0.0),
                 _ => Some(f64::INFINITY),
             };
         }
-        let discriminant = closing * closing - dot(v, v) * gap;
+        let discriminant = closing * closing - v.length_squared() * gap;
         if closing >= 0.0 || discriminant < 0.0 {
             return Some(f64::INFINITY);
         }
@@ -820,29 +982,26 @@ impl PairContact {
 
     /// Gives `b` the impulse `impulse` along the normal and `a` the opposite one.
     fn push_velocities(&self, a: &mut Body, b: &mut Body, impulse: f64) {
-        let [nx, ny] = self.state.normal;
+        let normal = self.state.normal;
         let (da, db) = (impulse * self.inverse_a, impulse * self.inverse_b);
-        a.vx -= da * nx;
-        a.vy -= da * ny;
-        b.vx += db * nx;
-        b.vy += db * ny;
+        a.velocity -= da * normal;
+        b.velocity += db * normal;
     }
 }
 
 impl FixedContact {
     /// The velocity pass for this contact.
     fn solve_velocity(&mut self, ball: &mut Body, sub: SubStep) {
-        let [nx, ny] = self.state.normal;
-        let change = self.state.solve(ball.vx * nx + ball.vy * ny, sub) / self.state.mass;
-        ball.vx += change * nx;
-        ball.vy += change * ny;
+        let normal = self.state.normal;
+        let change = self.state.impulse_change(ball.velocity.dot(normal), sub) / self.state.mass;
+        ball.velocity += change * normal;
     }
 
     /// When the ball, flying straight, reaches the line (infinite if never, 0 if it touches
     /// now); `None` if it is past the line by more than the slop.
     fn touch_time(&self, ball: &Body) -> Option<f64> {
         let separation = self.gap(ball);
-        let approach = dot([ball.vx, ball.vy], self.state.normal);
+        let approach = ball.velocity.dot(self.state.normal);
         match separation {
             s if s < -SLOP * ball.radius => None,
             _ if approach >= 0.0 => Some(f64::INFINITY),
@@ -852,7 +1011,7 @@ impl FixedContact {
 
     /// The gap between the ball and the line, px.
     fn gap(&self, ball: &Body) -> f64 {
-        dot([ball.x, ball.y], self.state.normal) - self.offset
+        ball.position.dot(self.state.normal) - self.offset
     }
 }
 
@@ -860,33 +1019,25 @@ impl FixedContact {
 /// ([`SLOP`] of their mean radius). Compared squared, without a square root.
 fn deeper_than_slop(a: &Body, b: &Body, reach: f64) -> bool {
     let closest = reach - SLOP * reach / 2.0;
-    let (dx, dy) = (b.x - a.x, b.y - a.y);
-    dx * dx + dy * dy < closest * closest
-}
-
-/// Mass of a ball: radius² (flat discs of equal density).
-fn mass(ball: &Body) -> f64 {
-    ball.radius * ball.radius
-}
-
-fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
-    a[0] * b[0] + a[1] * b[1]
+    (b.position - a.position).length_squared() < closest * closest
 }
 
 /// The gap between two balls whose radii add up to `reach`, and the normal from `a` to `b`
 /// (`fallback()` if their centres coincide).
-fn pair_gap(
-    a: &Body,
-    b: &Body,
-    reach: f64,
-    fallback: impl FnOnce() -> [f64; 2],
-) -> (f64, [f64; 2]) {
-    let (dx, dy) = (b.x - a.x, b.y - a.y);
-    let distance = (dx * dx + dy * dy).sqrt();
+fn pair_gap(a: &Body, b: &Body, reach: f64, fallback: impl FnOnce() -> Vec2) -> Gap {
+    let d = b.position - a.position;
+    let distance = d.length_squared().sqrt();
     if distance > 0.0 {
-        (distance - reach, [dx / distance, dy / distance])
+        let normal = Vec2::new(d.x / distance, d.y / distance);
+        Gap {
+            separation: distance - reach,
+            normal,
+        }
     } else {
-        (-reach, fallback())
+        Gap {
+            separation: -reach,
+            normal: fallback(),
+        }
     }
 }
 
@@ -900,7 +1051,7 @@ fn two(balls: &mut [Body], a: usize, b: usize) -> (&mut Body, &mut Body) {
 /// no direction. Any fixed direction would separate a pair, but a heap spawned on one spot
 /// would then spread along a single line; so ball `j` leaves at `j` golden angles, which
 /// fans successive balls out evenly round the circle, and depends on nothing but `j`.
-fn coincident_normal(j: usize) -> [f64; 2] {
+fn coincident_normal(j: usize) -> Vec2 {
     let angle = GOLDEN_ANGLE * j as f64;
-    [maths::cos(angle), maths::sin(angle)]
+    Vec2::new(maths::cos(angle), maths::sin(angle))
 }
