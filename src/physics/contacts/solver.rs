@@ -1028,7 +1028,7 @@ fn pair_gap(a: &Body, b: &Body, reach: f64, fallback: impl FnOnce() -> Vec2) -> 
     let d = b.position - a.position;
     let distance = d.length_squared().sqrt();
     if distance > 0.0 {
-        let normal = Vec2::new(d.x / distance, d.y / distance);
+        let normal = d / distance;
         Gap {
             separation: distance - reach,
             normal,
