@@ -16,7 +16,7 @@
 
 use std::time::Instant;
 
-use bouncing_ball::physics::accuracy::{deepest_overlap, lowest_pile, pile_height, rms_speed};
+use bouncing_ball_lab::accuracy::{deepest_overlap, lowest_pile, pile_height, rms_speed};
 use bouncing_ball::scene::file::{pile, preset};
 
 const FRAMES: u32 = 10_000;

@@ -12,7 +12,7 @@
 
 use std::time::Instant;
 
-use bouncing_ball::physics::accuracy::lesson_effects;
+use bouncing_ball_lab::accuracy::lesson_effects;
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;

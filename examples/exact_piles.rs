@@ -10,7 +10,7 @@
 //!
 //! Run: `cargo run --release --example exact_piles` (about 30 s).
 
-use bouncing_ball::physics::accuracy::{deepest_overlap, rms_speed};
+use bouncing_ball_lab::accuracy::{deepest_overlap, rms_speed};
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::walls::Walls;

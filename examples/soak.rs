@@ -8,7 +8,7 @@
 
 use std::time::Instant;
 
-use bouncing_ball::physics::accuracy::{deepest_overlap, kinetic_energy};
+use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
 use bouncing_ball::physics::motion::CollisionMode;
 use bouncing_ball::scene::file as scene_file;
 

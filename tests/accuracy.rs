@@ -4,7 +4,7 @@
 
 mod common;
 
-use bouncing_ball::physics::accuracy::{
+use bouncing_ball_lab::accuracy::{
     apex_height, bounces, fitted_order, free_flight_error, lesson_effects, FLOOR, GRAVITY, RADIUS,
     WIDTH,
 };

@@ -2,7 +2,7 @@
 //! parting pairs left alone, balls spawned on one spot separating without being set moving,
 //! the same bytes twice; and the grid broad phase against a brute-force search.
 
-use bouncing_ball::physics::accuracy::{deepest_overlap, kinetic_energy};
+use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::contacts::Grid;
 use bouncing_ball::physics::simulation::Simulation;

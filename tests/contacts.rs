@@ -2,7 +2,7 @@
 //! overlap, a pyramid stands, resting contacts do not bounce, momentum and energy obey their
 //! laws. `docs/contacts.md` has the figures these bounds come from.
 
-use bouncing_ball::physics::accuracy::{
+use bouncing_ball_lab::accuracy::{
     deepest_overlap, kinetic_energy, lowest_pile, pile_height, rms_speed,
 };
 use bouncing_ball::physics::ball::Ball;

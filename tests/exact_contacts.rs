@@ -1,7 +1,7 @@
 //! Exact mode for every contact: balls meet at the moment they touch (event-driven), floors
 //! are met at the moment of impact, nothing is clamped afterwards.
 
-use bouncing_ball::physics::accuracy::{
+use bouncing_ball_lab::accuracy::{
     deepest_overlap, kinetic_energy, lesson_effects, rms_speed,
 };
 use bouncing_ball::physics::ball::Ball;

@@ -4,7 +4,7 @@
 
 mod common;
 
-use bouncing_ball::physics::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
+use bouncing_ball_lab::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
@@ -359,7 +359,7 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
 }
 
 mod ball_ball {
-    use bouncing_ball::physics::accuracy::{deepest_overlap, kinetic_energy};
+    use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
     use bouncing_ball::physics::tolerances::SLOP;
     use bouncing_ball::scene::random::Random;
     use bouncing_ball::Scene;

@@ -6,7 +6,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use bouncing_ball::physics::accuracy::{lesson_effects, GRAVITY, RADIUS};
+use bouncing_ball_lab::accuracy::{lesson_effects, GRAVITY, RADIUS};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};

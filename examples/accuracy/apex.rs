@@ -6,7 +6,7 @@
 use std::path::Path;
 
 use bouncing_ball::output::OutputError;
-use bouncing_ball::physics::accuracy::{bounces, Bounce};
+use bouncing_ball_lab::accuracy::{bounces, Bounce};
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::plot::{flag_name, save_png};

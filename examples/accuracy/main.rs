@@ -1,5 +1,5 @@
 //! What accuracy costs in time: every integrator × substeps × collision mode, measured against
-//! closed-form physics (see `bouncing_ball::physics::accuracy`).
+//! closed-form physics (see `bouncing_ball_lab::accuracy`).
 //!
 //! `cargo run --release --example accuracy [-- FOLDER]` prints the table and the fitted
 //! convergence orders, reproduces the "lost apex" finding, and writes `accuracy.png` (error
@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use bouncing_ball::output::OutputError;
-use bouncing_ball::physics::accuracy::{
+use bouncing_ball_lab::accuracy::{
     apex_height, bounces, energy_drift, fitted_order, free_flight_error, FLOOR, GRAVITY,
 };
 use bouncing_ball::physics::motion::{CollisionMode, Motion};

@@ -16,6 +16,15 @@ pub fn mass(radius: f64) -> f64 {
     radius * radius
 }
 
+/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' [`mass`] (flat discs of equal density):
+/// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
+pub fn kinetic_energy(balls: &[Ball]) -> f64 {
+    balls
+        .iter()
+        .map(|b| 0.5 * mass(b.radius) * b.velocity().length_squared())
+        .sum()
+}
+
 /// One ball, in the lesson's units: pixels and frames.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ball {

@@ -1,22 +1,27 @@
 //! Physics: balls, the forces and boundaries acting on them, and how a frame moves them.
+//! Knows nothing of scene files, pixels or GIFs.
 //!
-//! Knows nothing of scene files, pixels or GIFs. The lesson's whole loop is [`ball::Ball::step`];
-//! the rest generalises it:
+//! **The lesson** comes first, in this folder:
 //!
-//! - [`ball`], [`walls`], [`floor`]: a ball's state and trail, the box, sloped segments.
-//! - [`effects`]: which forces and boundaries a scene has (an absent one costs nothing).
-//! - [`integrator`], [`motion`], [`exact`], [`poly`]: turning forces into motion; substeps;
-//!   bouncing at the exact time of impact.
-//! - [`grid`]: the broad phase that finds which balls can touch.
-//! - [`contacts`]: ball-ball collisions in clamp mode: the iterative contact solver that
-//!   piles and stacks need.
-//! - [`toi`], [`events`]: exact mode's ball-ball contacts: times of impact, and the
-//!   event-driven step that resolves every contact at its moment.
-//! - [`simulation`]: all balls advanced one frame, in the order above.
-//! - [`accuracy`]: closed forms and measures (energy, overlap) to check the solver against;
-//!   [`work`]: counting effect work.
+//! - [`ball`]: the ball's state, its trail, and [`ball::Ball::step`], the lesson's whole loop
+//!   (gravity, move, clamp-then-reflect off the walls, record the trail).
+//! - [`walls`]: the box; [`floor`]: sloped segments (the lesson's "slope" extension).
+//! - [`effects`], [`motion`], [`simulation`]: which forces and boundaries a scene has (an
+//!   absent one costs nothing), how a frame is solved, and all balls advanced one frame: by
+//!   the lesson's own step when the scene is the lesson's, by a solver below otherwise.
+//!
+//! **Beyond the lesson**, each in a folder whose `mod.rs` says what it adds and when a scene
+//! needs it:
+//!
+//! - [`integrate`]: other integrators, substeps, bouncing at the exact time of impact.
+//! - [`contacts`]: ball-ball collisions in clamp mode: the grid and the contact solver that
+//!   lets piles rest.
+//! - [`events`]: ball-ball collisions in exact mode, event by event.
+//!
+//! Shared by all: [`vec2`] (the 2-D vector), [`maths`] (transcendental functions, the same
+//! bits on every system), [`tolerances`] (every tolerance with its unit and reason), [`work`]
+//! (counting the work each effect does, for the tests).
 
-pub mod accuracy;
 pub mod ball;
 pub mod contacts;
 pub mod effects;

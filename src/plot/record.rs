@@ -4,7 +4,7 @@
 //! Energies are per unit mass, in px²/frame²: kinetic `½·|v|²`, potential `g·h` with `h` the
 //! distance the ball could still fall (to the floor, for the lesson's gravity).
 
-use crate::physics::accuracy::kinetic_energy;
+use crate::physics::ball::kinetic_energy;
 use crate::physics::ball::Ball;
 use crate::physics::contacts::Grid;
 use crate::physics::maths;

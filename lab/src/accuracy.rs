@@ -1,15 +1,12 @@
 //! The accuracy study: closed-form physics, and the experiments that measure a [`Motion`]
-//! against it (never against another integrator). Used by `tests/accuracy.rs`, the
-//! `accuracy` example and the benches.
+//! against it (never against another integrator); measures of piles and gases (height,
+//! speed, overlap). Used by the tests, the examples and the benches, never by the program.
 //!
 //! Every experiment runs in the lesson's box (320 × 240 px, radius 12, gravity 0.5 px/frame²).
 
-use super::ball::{mass, Ball};
-use super::contacts::Grid;
-use super::effects::Effects;
-use super::maths;
-use super::motion::Motion;
-use super::walls::Walls;
+pub use bouncing_ball::physics::ball::kinetic_energy;
+use bouncing_ball::physics::contacts::Grid;
+use bouncing_ball::physics::{maths, Ball, Effects, Motion, Walls};
 
 /// The lesson's canvas, px.
 pub const WIDTH: f64 = 320.0;
@@ -165,15 +162,6 @@ pub fn pile_height(balls: &[Ball], floor: f64) -> f64 {
 pub fn rms_speed(balls: &[Ball]) -> f64 {
     let sum: f64 = balls.iter().map(|b| b.velocity().length_squared()).sum();
     (sum / balls.len().max(1) as f64).sqrt()
-}
-
-/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' [`mass`] (flat discs of equal density):
-/// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
-pub fn kinetic_energy(balls: &[Ball]) -> f64 {
-    balls
-        .iter()
-        .map(|b| 0.5 * mass(b.radius) * b.velocity().length_squared())
-        .sum()
 }
 
 /// How deep the most overlapping pair overlaps, px (0 if none does): a measure for tests and
