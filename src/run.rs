@@ -5,8 +5,9 @@
 //! colours, its memory ([`crate::budget`]) and the output paths ([`crate::output::check`]).
 //! Every file is then written beside its target and renamed into place only at the end.
 
+use std::fs::File;
 use std::io::{BufWriter, Write};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::budget::{Estimate, OverBudget, DEFAULT_MEMORY_BUDGET};
@@ -15,7 +16,7 @@ use crate::output::{self, AtomicFile, Output, OutputError, OutputRefused, Stdout
 use crate::physics::Ball;
 use crate::plot::Plot;
 use crate::progress::Progress;
-use crate::render::palette::TooManyColours;
+use crate::render::palette::{IndexedFrame, Palette, TooManyColours};
 use crate::render::raster::Renderer;
 use crate::render::write_png;
 use crate::scene::{InvalidValue, Scene};
@@ -58,7 +59,7 @@ impl Outputs {
     }
 
     /// Every output this run writes, in the order they are renamed into place. A new kind
-    /// of output is one more entry here (and one more file in `run`).
+    /// of output is one more entry here (and one more file in [`Files`]).
     pub fn list(&self) -> Vec<Output<'_>> {
         let mut list = vec![
             Output::file("--gif", &self.gif),
@@ -176,23 +177,13 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     estimate.check(outputs.memory_budget)?;
     output::check(&outputs.list(), outputs.scene_file.as_deref())?;
     let renderer = Renderer::new(scene)?;
-    let mut plot = outputs
+    let plot = outputs
         .plot
         .as_deref()
         .map(|path| Plot::new(scene, path))
         .transpose()?;
     // Open every output first, so an unwritable folder fails before any work is done.
-    let mut gif_file = AtomicFile::create(&outputs.gif)?;
-    let mut png_file = AtomicFile::create(&outputs.png)?;
-    let mut trace_file = match &outputs.trace {
-        Some(path) if !output::is_stdout(path) => Some(AtomicFile::create(path)?),
-        _ => None,
-    };
-    let mut plot_file = outputs
-        .plot
-        .as_deref()
-        .map(AtomicFile::create)
-        .transpose()?;
+    let mut files = Files::create(outputs)?;
     // Only once nothing more can be refused, so a refusal stays a single line.
     if outputs.progress {
         for warning in estimate.warnings(scene) {
@@ -200,25 +191,29 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         }
     }
 
-    let gif_error = OutputError::at(&outputs.gif);
-    let mut gif = GifWriter::new(
-        BufWriter::new(gif_file.file()),
-        scene.width as u16,
-        scene.height as u16,
-        renderer.palette(),
-        scene.frame_ms,
-    )
-    .map_err(&gif_error)?;
-    let mut trace_out: Option<BufWriter<Box<dyn Write + '_>>> = match trace_file.as_mut() {
-        Some(file) => Some(BufWriter::new(Box::new(file.file()))),
-        None if outputs.trace_on_stdout() => Some(BufWriter::new(Box::new(StdoutStream::new()))),
-        None => None,
-    };
-    let trace_path = outputs.trace.as_deref().unwrap_or(&outputs.gif);
-    if let Some(out) = trace_out.as_mut() {
-        trace::write_header(out).map_err(OutputError::at(trace_path))?;
-    }
+    let mut writers = Writers::open(scene, outputs, &renderer, plot, &mut files)?;
+    let last_frame = animate(scene, outputs, &renderer, &mut writers)?;
+    writers.finish(&last_frame, renderer.palette())?;
 
+    // The last moment a signal stops the run; from here on the files go into place.
+    stop_if_asked(outputs, scene.frames, scene.frames)?;
+    let sizes = files.commit()?;
+    Ok(Summary {
+        frames: scene.frames,
+        gif_bytes: sizes[0],
+        png_bytes: sizes[1],
+        elapsed: started.elapsed(),
+    })
+}
+
+/// Simulates every frame of `scene`, drawing it and handing it to `writers`; returns the
+/// last frame drawn, for the still.
+fn animate(
+    scene: &Scene,
+    outputs: &Outputs,
+    renderer: &Renderer,
+    writers: &mut Writers,
+) -> Result<IndexedFrame, RunError> {
     let mut simulation = scene.simulation();
     let mut frame = renderer.new_frame();
     let mut progress = Progress::new(scene.frames, outputs.progress);
@@ -226,48 +221,161 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
         stop_if_asked(outputs, n, scene.frames)?;
         simulation.step();
         check_finite(scene, simulation.balls(), n)?;
-        if let Some(out) = trace_out.as_mut() {
-            trace::write_frame(out, n, simulation.balls()).map_err(OutputError::at(trace_path))?;
-        }
-        if let Some(plot) = plot.as_mut() {
-            plot.record(simulation.balls());
-        }
+        writers.record(n, simulation.balls())?;
         renderer.draw(simulation.balls(), &mut frame);
-        gif.write_frame(&frame).map_err(&gif_error)?;
+        writers.write_frame(&frame)?;
         progress.frames_done(n + 1);
     }
-    drop(progress);
-    // The last frames are encoded while the still is written.
-    gif.send_queued().map_err(&gif_error)?;
-    let mut png_out = BufWriter::new(png_file.file());
-    write_png(&mut png_out, &frame, renderer.palette())
-        .and_then(|()| png_out.flush())
-        .map_err(OutputError::at(&outputs.png))?;
-    drop(png_out);
-    gif.finish()
-        .and_then(|mut out| out.flush())
-        .map_err(&gif_error)?;
-    if let Some(out) = trace_out.as_mut() {
-        out.flush().map_err(OutputError::at(trace_path))?;
-    }
-    drop(trace_out);
-    if let (Some(plot), Some(file), Some(path)) = (plot, &mut plot_file, outputs.plot.as_deref()) {
-        plot.write(file.file()).map_err(OutputError::at(path))?;
+    Ok(frame)
+}
+
+/// Every file a run writes, open from before the first frame until they all go into place
+/// together at the end.
+struct Files {
+    gif: AtomicFile,
+    png: AtomicFile,
+    /// `None` without a trace, or when it goes to standard output.
+    trace: Option<AtomicFile>,
+    plot: Option<AtomicFile>,
+}
+
+impl Files {
+    /// Opens every output file, in the order of [`Outputs::list`].
+    fn create(outputs: &Outputs) -> Result<Files, OutputError> {
+        Ok(Files {
+            gif: AtomicFile::create(&outputs.gif)?,
+            png: AtomicFile::create(&outputs.png)?,
+            trace: match &outputs.trace {
+                Some(path) if !output::is_stdout(path) => Some(AtomicFile::create(path)?),
+                _ => None,
+            },
+            plot: outputs
+                .plot
+                .as_deref()
+                .map(AtomicFile::create)
+                .transpose()?,
+        })
     }
 
-    // The last moment a signal stops the run; from here on the files go into place.
-    stop_if_asked(outputs, scene.frames, scene.frames)?;
-    let files = [gif_file, png_file]
-        .into_iter()
-        .chain(trace_file)
-        .chain(plot_file);
-    let sizes = output::commit_all(files.collect())?;
-    Ok(Summary {
-        frames: scene.frames,
-        gif_bytes: sizes[0],
-        png_bytes: sizes[1],
-        elapsed: started.elapsed(),
-    })
+    /// Puts every file in place; returns their sizes in the same order.
+    fn commit(self) -> Result<Vec<u64>, OutputError> {
+        let files = [self.gif, self.png]
+            .into_iter()
+            .chain(self.trace)
+            .chain(self.plot);
+        output::commit_all(files.collect())
+    }
+}
+
+/// What a run writes into as it goes, on top of its [`Files`]: the GIF and the trace are
+/// streamed frame by frame, the plot is recorded and written at the end, as is the still.
+struct Writers<'a> {
+    /// Where each goes, for messages.
+    outputs: &'a Outputs,
+    gif: GifWriter<BufWriter<&'a mut File>>,
+    trace: Option<TraceWriter<'a>>,
+    plot: Option<Plot>,
+    plot_file: Option<&'a mut AtomicFile>,
+    png_file: &'a mut AtomicFile,
+}
+
+/// The trace's CSV as it is written, and its path for messages.
+struct TraceWriter<'a> {
+    out: BufWriter<Box<dyn Write + 'a>>,
+    path: &'a Path,
+}
+
+impl<'a> Writers<'a> {
+    /// Starts the GIF (its header and colour table) and the trace (its header) in `files`,
+    /// and takes the plot to record into.
+    fn open(
+        scene: &Scene,
+        outputs: &'a Outputs,
+        renderer: &Renderer,
+        plot: Option<Plot>,
+        files: &'a mut Files,
+    ) -> Result<Writers<'a>, RunError> {
+        let gif = GifWriter::new(
+            BufWriter::new(files.gif.file()),
+            scene.width as u16,
+            scene.height as u16,
+            renderer.palette(),
+            scene.frame_ms,
+        )
+        .map_err(OutputError::at(&outputs.gif))?;
+        Ok(Writers {
+            outputs,
+            gif,
+            trace: TraceWriter::open(outputs, files.trace.as_mut())?,
+            plot,
+            plot_file: files.plot.as_mut(),
+            png_file: &mut files.png,
+        })
+    }
+
+    /// Records frame `n`'s `balls` in the trace and the plot, each if asked for.
+    fn record(&mut self, n: u32, balls: &[Ball]) -> Result<(), OutputError> {
+        if let Some(trace) = self.trace.as_mut() {
+            trace::write_frame(&mut trace.out, n, balls).map_err(OutputError::at(trace.path))?;
+        }
+        if let Some(plot) = self.plot.as_mut() {
+            plot.record(balls);
+        }
+        Ok(())
+    }
+
+    /// Queues a drawn frame for the GIF.
+    fn write_frame(&mut self, frame: &IndexedFrame) -> Result<(), OutputError> {
+        self.gif
+            .write_frame(frame)
+            .map_err(OutputError::at(&self.outputs.gif))
+    }
+
+    /// Writes `last_frame` as the still, then ends the GIF, the trace and the plot: every
+    /// byte is written, though no file is in place yet.
+    fn finish(mut self, last_frame: &IndexedFrame, palette: &Palette) -> Result<(), OutputError> {
+        let gif_error = OutputError::at(&self.outputs.gif);
+        // The last frames are encoded while the still is written.
+        self.gif.send_queued().map_err(&gif_error)?;
+        let mut png_out = BufWriter::new(self.png_file.file());
+        write_png(&mut png_out, last_frame, palette)
+            .and_then(|()| png_out.flush())
+            .map_err(OutputError::at(&self.outputs.png))?;
+        drop(png_out);
+        self.gif
+            .finish()
+            .and_then(|mut out| out.flush())
+            .map_err(&gif_error)?;
+        if let Some(mut trace) = self.trace {
+            trace.out.flush().map_err(OutputError::at(trace.path))?;
+        }
+        if let (Some(plot), Some(file)) = (self.plot, self.plot_file) {
+            plot.write(file.file())
+                .map_err(OutputError::at(file.path()))?;
+        }
+        Ok(())
+    }
+}
+
+impl<'a> TraceWriter<'a> {
+    /// Starts the trace, into `file` or standard output, with its header; `None` when no
+    /// trace was asked for.
+    fn open(
+        outputs: &'a Outputs,
+        file: Option<&'a mut AtomicFile>,
+    ) -> Result<Option<TraceWriter<'a>>, OutputError> {
+        let Some(path) = outputs.trace.as_deref() else {
+            return Ok(None);
+        };
+        // A trace without a file is one on standard output (see `Files::create`).
+        let out: Box<dyn Write + 'a> = match file {
+            Some(file) => Box::new(file.file()),
+            None => Box::new(StdoutStream::new()),
+        };
+        let mut out = BufWriter::new(out);
+        trace::write_header(&mut out).map_err(OutputError::at(path))?;
+        Ok(Some(TraceWriter { out, path }))
+    }
 }
 
 /// Returns `Stopped` if a signal has come.

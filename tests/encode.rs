@@ -424,15 +424,7 @@ fn assert_fork_equals_start(
             continue;
         };
         forked += 1;
-        let codes = lzw.compress_from(
-            fork,
-            choices,
-            size,
-            pixels,
-            &first,
-            usize::MAX,
-            &mut resumed,
-        );
+        let codes = lzw.compress_from(fork, choices, pixels, &first, usize::MAX, &mut resumed);
         assert_eq!(codes, expected, "{case}: codes held");
         assert!(
             resumed == whole,

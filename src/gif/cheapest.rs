@@ -21,7 +21,7 @@
 use std::mem::swap;
 
 use super::interlace::interlace;
-use super::lzw::{min_code_size, Choices, Lzw};
+use super::lzw::{min_code_size, Choices, Fork, Lzw};
 use super::transparency::{
     count_neighbours, mark_mixed_stretches, mark_unchanged, mixed_neighbours, transparent_index,
 };
@@ -66,121 +66,198 @@ impl Coder {
         table_len: usize,
         best: &mut Vec<u8>,
     ) -> Encoding {
-        let lzw = self.lzw.get_or_insert_with(Lzw::new);
+        // The coder's parts one by one, so that the search can use the coder and its
+        // buffers while a marked layout is read from `layout`.
+        let Coder {
+            lzw,
+            layout,
+            interlaced,
+            winner,
+            candidate,
+            other,
+        } = self;
+        let mut search = Search {
+            lzw: lzw.get_or_insert_with(Lzw::new),
+            winner,
+            candidate,
+            other,
+            best,
+            budget: usize::MAX,
+            encoding: Encoding::default(),
+            small_fork: None,
+        };
+        search.code_layout(current, width, None, interlaced);
+        if let Some(marking) = Marking::worth_trying(current, beneath, table_len) {
+            let Marking { under, index, .. } = marking;
+            let marked = mark_mixed_stretches(current, under, index, layout);
+            // Where marking mixed stretches does not pay, marking more never did. (Marking
+            // every unchanged pixel seldom removes runs; it pays by making the rectangle's
+            // runs mostly one index, which LZW repeats well.)
+            if marking.saves_runs(layout) {
+                // A layout with nothing marked is the one already tried.
+                if marked > 0 {
+                    search.code_layout(layout, width, Some(index), interlaced);
+                }
+                if mark_unchanged(current, under, index, layout) > 0 {
+                    search.code_layout(layout, width, Some(index), interlaced);
+                }
+            }
+        }
+        search.try_small_dictionary()
+    }
+}
+
+/// What the marked layouts are made from: the picture beneath the rectangle, the index that
+/// means transparent, and how many runs of one index the rectangle holds unmarked.
+#[derive(Clone, Copy)]
+struct Marking<'a> {
+    under: &'a [u8],
+    index: u8,
+    runs_as_is: usize,
+}
+
+impl<'a> Marking<'a> {
+    /// The marking of `current` over `beneath`, or `None` when there is nothing beneath, no
+    /// marked layout could remove enough runs, or no index is free to mean transparent.
+    fn worth_trying(
+        current: &[u8],
+        beneath: Option<&'a [u8]>,
+        table_len: usize,
+    ) -> Option<Marking<'a>> {
+        let under = beneath?;
         let runs_as_is = runs(current);
         // Marking removes at most one run per pair of neighbouring unchanged pixels of two
         // colours: when those are too few, no marked layout can pass its test, so none is made.
-        let marking_can_pay = |under: &[u8]| {
-            let at_best = runs_as_is.saturating_sub(mixed_neighbours(current, under));
-            saves_runs(runs_as_is, at_best)
-        };
-        let transparent = beneath
-            .filter(|under| marking_can_pay(under))
-            .and_then(|under| Some((under, transparent_index(current, under, table_len)?)));
-        let mut chosen = Encoding::default();
-        let mut code_size = 0;
-        let mut budget = usize::MAX;
-        let mut winner_small_fork = None;
-        let mut mixed_tried = false;
-        for layout in [Layout::AsIs, Layout::MixedStretches, Layout::AllUnchanged] {
-            let largest_index = match (layout, transparent) {
-                (Layout::AsIs, _) => largest(current),
-                (_, None) => continue,
-                (_, Some((under, index))) => {
-                    let marked = match layout {
-                        Layout::MixedStretches => {
-                            let marked =
-                                mark_mixed_stretches(current, under, index, &mut self.layout);
-                            if !saves_runs(runs_as_is, runs(&self.layout)) {
-                                continue;
-                            }
-                            mixed_tried = true;
-                            marked
-                        }
-                        // Where marking mixed stretches does not pay, marking more never did.
-                        // (Marking every unchanged pixel seldom removes runs; it pays by making
-                        // the rectangle's runs mostly one index, which LZW repeats well.)
-                        _ if !mixed_tried => continue,
-                        _ => mark_unchanged(current, under, index, &mut self.layout),
-                    };
-                    // Nothing marked is the layout already tried.
-                    if marked == 0 {
-                        continue;
-                    }
-                    largest(&self.layout).max(index)
-                }
-            };
-            let size = min_code_size(usize::from(largest_index) + 1);
-            let normal = match layout {
-                Layout::AsIs => current,
-                _ => &self.layout[..],
-            };
-            interlace(normal, width, &mut self.interlaced);
-            for interlaced in [false, true] {
-                let pixels = if interlaced { &self.interlaced } else { normal };
-                let greedy = Choices::GREEDY;
-                let coded = lzw.compress(size, pixels, greedy, budget, &mut self.candidate);
-                let forks = lzw.forks();
-                let mut won = coded.is_some();
-                let mut codes = coded.unwrap_or(0);
-                if won {
-                    swap(best, &mut self.candidate);
-                    budget = best.len();
-                }
-                // A dictionary kept full only differs once it fills (big frames), so it is
-                // tried on every layout; a given-up coding still holds the bytes up to there.
-                if let Some(fork) = forks.full {
-                    let first = if won { &best[..] } else { &self.candidate[..] };
-                    let keep_full = Choices::KEEP_FULL;
-                    let coded = lzw.compress_from(
-                        fork,
-                        keep_full,
-                        size,
-                        pixels,
-                        first,
-                        budget,
-                        &mut self.other,
-                    );
-                    if let Some(kept) = coded {
-                        swap(best, &mut self.other);
-                        budget = best.len();
-                        won = true;
-                        codes = kept;
-                    }
-                }
-                if won {
-                    winner_small_fork = forks.small.filter(|_| codes > SMALL_DICTIONARY_FROM);
-                    if winner_small_fork.is_some() {
-                        self.winner.clear();
-                        self.winner.extend_from_slice(pixels);
-                    }
-                    code_size = size;
-                    chosen = Encoding {
-                        transparent: match layout {
-                            Layout::AsIs => None,
-                            _ => transparent.map(|(_, index)| index),
-                        },
-                        interlaced,
-                    };
-                }
-            }
+        let at_best = runs_as_is.saturating_sub(mixed_neighbours(current, under));
+        if !saves_runs(runs_as_is, at_best) {
+            return None;
         }
+        let index = transparent_index(current, under, table_len)?;
+        Some(Marking {
+            under,
+            index,
+            runs_as_is,
+        })
+    }
+
+    /// Whether the marked `layout` holds at least [`MIN_RUNS_SAVED`] fewer runs than the
+    /// rectangle as it is: only then is it worth coding.
+    fn saves_runs(&self, layout: &[u8]) -> bool {
+        saves_runs(self.runs_as_is, runs(layout))
+    }
+}
+
+/// One frame's search for its smallest coding: the coder and buffers it borrows, and the
+/// best coding so far. Every candidate gives up once it is no smaller than the best.
+struct Search<'a> {
+    lzw: &'a mut Lzw,
+    /// The winning layout so far, when the small dictionary is to be tried on it.
+    winner: &'a mut Vec<u8>,
+    /// A candidate's compressed bytes, and another's made from the first part of them.
+    candidate: &'a mut Vec<u8>,
+    other: &'a mut Vec<u8>,
+    /// The best coding's bytes.
+    best: &'a mut Vec<u8>,
+    /// Where a candidate gives up: the best's length, or no limit before the first.
+    budget: usize,
+    /// How the best coding is encoded, for the frame's header.
+    encoding: Encoding,
+    /// Where the best's greedy coding reached the small dictionary's size, when the small
+    /// dictionary is worth trying on it.
+    small_fork: Option<Fork>,
+}
+
+impl Search<'_> {
+    /// Codes one layout, `normal` in normal row order, in both row orders. `transparent` is
+    /// the index the layout marks unchanged pixels with, if any; `interlaced` is scratch.
+    fn code_layout(
+        &mut self,
+        normal: &[u8],
+        width: usize,
+        transparent: Option<u8>,
+        interlaced: &mut Vec<u8>,
+    ) {
+        let largest_index = largest(normal).max(transparent.unwrap_or(0));
+        let code_size = min_code_size(usize::from(largest_index) + 1);
+        interlace(normal, width, interlaced);
+        for (pixels, is_interlaced) in [(normal, false), (&interlaced[..], true)] {
+            let encoding = Encoding {
+                transparent,
+                interlaced: is_interlaced,
+            };
+            self.code_candidate(pixels, code_size, encoding);
+        }
+    }
+
+    /// Codes `pixels` with the greedy dictionary, and again with the full dictionary kept
+    /// if it filled; whichever is smallest becomes the best, encoded as `encoding`.
+    fn code_candidate(&mut self, pixels: &[u8], code_size: u8, encoding: Encoding) {
+        let greedy = self.lzw.compress(
+            code_size,
+            pixels,
+            Choices::GREEDY,
+            self.budget,
+            self.candidate,
+        );
+        let forks = self.lzw.forks();
+        if greedy.is_some() {
+            swap(self.best, self.candidate);
+            self.budget = self.best.len();
+        }
+        // A dictionary kept full only differs once it fills (big frames), so it is tried on
+        // every layout.
+        let kept_full = forks
+            .full
+            .and_then(|fork| self.keep_full(fork, pixels, greedy.is_some()));
+        // The most codes the winning coding's dictionary held, if it won.
+        let Some(codes) = kept_full.or(greedy) else {
+            return;
+        };
+        self.small_fork = forks.small.filter(|_| codes > SMALL_DICTIONARY_FROM);
+        if self.small_fork.is_some() {
+            self.winner.clear();
+            self.winner.extend_from_slice(pixels);
+        }
+        self.encoding = encoding;
+    }
+
+    /// Codes `pixels` with the full dictionary kept, from `fork`, where the greedy coding
+    /// first filled it, and keeps it if it is the smallest. The greedy coding is the best
+    /// when `greedy_won`, else the candidate: a given-up coding still holds the bytes up to
+    /// the fork. Returns the most codes the dictionary held, if it won.
+    fn keep_full(&mut self, fork: Fork, pixels: &[u8], greedy_won: bool) -> Option<u16> {
+        let first = if greedy_won {
+            &self.best[..]
+        } else {
+            &self.candidate[..]
+        };
+        let choices = Choices::KEEP_FULL;
+        let coded =
+            self.lzw
+                .compress_from(fork, choices, pixels, first, self.budget, self.other)?;
+        swap(self.best, self.other);
+        self.budget = self.best.len();
+        Some(coded)
+    }
+
+    /// Codes the winning layout again with the small dictionary, from its greedy coding's
+    /// small fork, and keeps it if it is smaller. Returns how the best coding is encoded.
+    fn try_small_dictionary(self) -> Encoding {
         // The best coding's bytes are the greedy coding's up to the small fork.
-        if let Some(fork) = winner_small_fork {
-            let coded = lzw.compress_from(
+        if let Some(fork) = self.small_fork {
+            let coded = self.lzw.compress_from(
                 fork,
                 Choices::SMALL,
-                code_size,
-                &self.winner,
-                best,
-                budget,
-                &mut self.candidate,
+                self.winner,
+                self.best,
+                self.budget,
+                self.candidate,
             );
             if coded.is_some() {
-                swap(best, &mut self.candidate);
+                swap(self.best, self.candidate);
             }
         }
-        chosen
+        self.encoding
     }
 }
 
@@ -188,17 +265,6 @@ impl Coder {
 /// this, one and a half times its own size: on frames below it saved a few bytes at most
 /// (the lesson's 200 frames: 29 B of 119 kB) for a sixth of the encoder's time.
 pub const SMALL_DICTIONARY_FROM: u16 = 768;
-
-/// Which pixels of the changed rectangle a layout writes as transparent.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Layout {
-    /// None.
-    AsIs,
-    /// Stretches of unchanged pixels that hold more than one colour.
-    MixedStretches,
-    /// Every unchanged pixel.
-    AllUnchanged,
-}
 
 /// The share of a frame's runs that marking must remove before the marked layout is coded:
 /// one in a hundred. Marking that removes fewer never won on a bundled scene (docs/gif.md),

@@ -177,20 +177,20 @@ impl Lzw {
     }
 
     /// The same as compressing `pixels` again with `choices`, but starting from `fork`, the
-    /// fork for `choices` of the greedy coding whose output is `first` (same pixels, same code
-    /// size). A fork into a dictionary kept full needs that dictionary, which the coder keeps
-    /// only until its next [`Lzw::compress`].
-    #[allow(clippy::too_many_arguments)]
+    /// fork for `choices` of the greedy coding whose output is `first` (same pixels). A fork
+    /// into a dictionary kept full needs that dictionary, which the coder keeps only until its
+    /// next [`Lzw::compress`].
     pub fn compress_from(
         &mut self,
         fork: Fork,
         choices: Choices,
-        min_code_size: u8,
         pixels: &[u8],
         first: &[u8],
         budget: usize,
         out: &mut Vec<u8>,
     ) -> Option<u16> {
+        // Image data starts with its code size (see `compress`), so the fork's is there.
+        let min_code_size = first[0];
         out.clear();
         out.extend_from_slice(&first[..fork.bytes]);
         let mut bits = BitPacker {

@@ -70,78 +70,46 @@ impl Renderer {
             .chain(floor_colour)
             .chain(scene.balls.iter().map(|b| b.colour))
             .collect();
-        let mut longest: HashMap<Rgb, usize> = HashMap::new();
-        for ball in &scene.balls {
-            let len = longest.entry(ball.trail_colour).or_default();
-            *len = (*len).max(ball.trail);
-        }
-        let trails: Vec<(Rgb, usize)> = longest.into_iter().collect();
+        let (mut tables, table_of_ball) = shade_tables(scene);
+        let trails: Vec<(Rgb, usize)> = tables.iter().map(|t| (t.colour, t.longest)).collect();
         let levels = fade_levels(&solid, &trails)?;
-        let mut palette = Palette::new();
-        let too_many = || TooManyColours {
-            needed: solid.len(),
+
+        // Solid colours first, then every shade.
+        let mut palette = GrowingPalette {
+            palette: Palette::new(),
+            solid: solid.len(),
         };
-        let background = palette.insert(scene.background).ok_or_else(too_many)?;
+        let background = palette.insert(scene.background)?;
         let floor = match floor_colour {
-            Some(colour) => palette.insert(colour).ok_or_else(too_many)?,
+            Some(colour) => palette.insert(colour)?,
             None => background,
         };
-        let mut tables: Vec<ShadeTable> = Vec::new();
-        let mut table_of: HashMap<Rgb, usize> = HashMap::new();
-        let mut uses = Vec::with_capacity(scene.balls.len());
-        for spec in &scene.balls {
-            let ball = palette.insert(spec.colour).ok_or_else(too_many)?;
-            let table = *table_of.entry(spec.trail_colour).or_insert_with(|| {
-                tables.push(ShadeTable {
-                    colour: spec.trail_colour,
-                    longest: 0,
-                    shades: Vec::new(),
-                });
-                tables.len() - 1
-            });
-            tables[table].longest = tables[table].longest.max(spec.trail);
-            uses.push((ball, table));
-        }
-        // Shades of full-length trails first, brightest (newest, biggest dot) first:
-        // `reorder` keeps this order within each stage, and a frame where dots overlap shows
-        // mostly the newest ones.
-        let longest = tables.iter().map(|t| t.longest).max().unwrap_or(0);
-        for table in &mut tables {
-            table.shades = vec![0; slot(0, table.longest + 1)];
-        }
-        for n in (1..=longest).rev() {
-            for table in tables.iter_mut().filter(|t| n <= t.longest) {
-                for i in drawn_dots(n).rev() {
-                    let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
-                    table.shades[slot(i, n)] = palette
-                        .insert(shade(table.colour, f))
-                        .ok_or_else(too_many)?;
-                }
-            }
-        }
-        // Balls alike in trail colour and length draw alike: each kind is one stage entry.
-        let mut kinds: Vec<(usize, usize)> = scene
+        let balls = scene
             .balls
             .iter()
-            .map(|spec| (table_of[&spec.trail_colour], spec.trail))
-            .collect();
-        kinds.sort_unstable();
-        kinds.dedup();
-        let mut always: Vec<u8> = vec![background, floor];
-        always.extend(uses.iter().map(|&(ball, _)| ball));
-        let new_index = palette.reorder(&stages(&always, &tables, &kinds));
-        let renumber = |index: &mut u8| *index = new_index[usize::from(*index)];
-        let [mut background, mut floor] = [background, floor];
-        renumber(&mut background);
-        renumber(&mut floor);
-        for table in &mut tables {
-            table.shades.iter_mut().for_each(renumber);
-        }
-        let tables: Vec<Arc<[u8]>> = tables.into_iter().map(|t| t.shades.into()).collect();
-        let styles = uses
+            .map(|spec| palette.insert(spec.colour))
+            .collect::<Result<Vec<u8>, _>>()?;
+        insert_shades(&mut tables, levels, &mut palette)?;
+        let mut palette = palette.palette;
+
+        // Renumbered so that the colours drawn together sit together (see `stages`).
+        let kinds = kinds(scene, &table_of_ball);
+        let always: Vec<u8> = [background, floor]
             .into_iter()
+            .chain(balls.iter().copied())
+            .collect();
+        let new_index = palette.reorder(&stages(&always, &tables, &kinds));
+        let renumber = |index: u8| new_index[usize::from(index)];
+
+        let tables: Vec<Arc<[u8]>> = tables
+            .iter()
+            .map(|table| table.shades.iter().copied().map(renumber).collect())
+            .collect();
+        let styles = balls
+            .into_iter()
+            .zip(table_of_ball)
             .map(|(ball, table)| BallStyle {
-                ball: new_index[usize::from(ball)],
+                ball: renumber(ball),
                 trail_shades: Arc::clone(&tables[table]),
             })
             .collect();
@@ -149,9 +117,9 @@ impl Renderer {
             width: scene.width,
             height: scene.height,
             palette,
-            background,
+            background: renumber(background),
             floors: scene.floors.clone(),
-            floor,
+            floor: renumber(floor),
             styles,
         })
     }
@@ -189,6 +157,80 @@ impl Renderer {
             fill_circle(frame, ball.x, ball.y, ball.radius, style.ball);
         }
     }
+}
+
+/// The palette while the renderer fills it: a colour that does not fit is the scene's
+/// error, which counts the scene's `solid` colours.
+struct GrowingPalette {
+    palette: Palette,
+    solid: usize,
+}
+
+impl GrowingPalette {
+    /// The index of `colour`, added if new.
+    fn insert(&mut self, colour: Rgb) -> Result<u8, TooManyColours> {
+        let too_many = TooManyColours { needed: self.solid };
+        self.palette.insert(colour).ok_or(too_many)
+    }
+}
+
+/// One shade table per trail colour, in the order the balls first use them, each sized for
+/// the longest trail in its colour (its shades not yet filled in); and each ball's table.
+fn shade_tables(scene: &Scene) -> (Vec<ShadeTable>, Vec<usize>) {
+    let mut tables: Vec<ShadeTable> = Vec::new();
+    let mut table_of: HashMap<Rgb, usize> = HashMap::new();
+    let mut table_of_ball = Vec::with_capacity(scene.balls.len());
+    for spec in &scene.balls {
+        let table = *table_of.entry(spec.trail_colour).or_insert_with(|| {
+            tables.push(ShadeTable {
+                colour: spec.trail_colour,
+                longest: 0,
+                shades: Vec::new(),
+            });
+            tables.len() - 1
+        });
+        tables[table].longest = tables[table].longest.max(spec.trail);
+        table_of_ball.push(table);
+    }
+    for table in &mut tables {
+        table.shades = vec![0; slot(0, table.longest + 1)];
+    }
+    (tables, table_of_ball)
+}
+
+/// The distinct (shade table, trail length) pairs of the scene's balls, given each ball's
+/// table: balls alike in both draw alike, so each kind is one stage entry.
+fn kinds(scene: &Scene, table_of_ball: &[usize]) -> Vec<(usize, usize)> {
+    let mut kinds: Vec<(usize, usize)> = table_of_ball
+        .iter()
+        .copied()
+        .zip(scene.balls.iter().map(|spec| spec.trail))
+        .collect();
+    kinds.sort_unstable();
+    kinds.dedup();
+    kinds
+}
+
+/// Adds every table's shades to the palette, each dimmed to one of `levels` steps when the
+/// exact shades do not fit ([`fade_levels`]), and notes their indices in the tables.
+fn insert_shades(
+    tables: &mut [ShadeTable],
+    levels: Option<usize>,
+    palette: &mut GrowingPalette,
+) -> Result<(), TooManyColours> {
+    // Shades of full-length trails first, brightest (newest, biggest dot) first: `reorder`
+    // keeps this order within each stage, and a frame where dots overlap shows mostly the
+    // newest ones.
+    let longest = tables.iter().map(|t| t.longest).max().unwrap_or(0);
+    for n in (1..=longest).rev() {
+        for table in tables.iter_mut().filter(|t| n <= t.longest) {
+            for i in drawn_dots(n).rev() {
+                let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
+                table.shades[slot(i, n)] = palette.insert(shade(table.colour, f))?;
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The segment `from`-`to`, cut along its longer axis to one pixel beyond the canvas
