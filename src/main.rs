@@ -6,13 +6,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
-use bouncing_ball::physics::motion::DEFAULT_ITERATIONS;
-use bouncing_ball::physics::{CollisionMode, Integrator};
 use bouncing_ball::scene::{self, preset_names, Overrides, SceneFileError};
 use bouncing_ball::stop::Stop;
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene};
-use clap::parser::ValueSource;
-use clap::{ArgAction, ArgMatches, CommandFactory, FromArgMatches, Parser, Subcommand};
+use clap::{ArgAction, CommandFactory, FromArgMatches, Parser, Subcommand};
 use clap_complete::Shell;
 
 // --- Canvas ---
@@ -77,60 +74,9 @@ struct Args {
     /// Seed for everything random (same seed, same bytes out)
     #[arg(long, default_value_t = 1)]
     seed: u64,
-    /// Canvas width, px
-    #[arg(long, default_value_t = WIDTH)]
-    width: u32,
-    /// Canvas height, px
-    #[arg(long, default_value_t = HEIGHT)]
-    height: u32,
-    /// Ball radius, px
-    #[arg(long, default_value_t = RADIUS)]
-    radius: f64,
-    /// Start position x, px
-    #[arg(long, default_value_t = START.0)]
-    x: f64,
-    /// Start position y, px (y grows downwards)
-    #[arg(long, default_value_t = START.1)]
-    y: f64,
-    /// Start velocity x, px/frame
-    #[arg(long, default_value_t = INITIAL_VEL.0)]
-    vx: f64,
-    /// Start velocity y, px/frame
-    #[arg(long, default_value_t = INITIAL_VEL.1)]
-    vy: f64,
-    /// Gravity, px/frame² (downwards; negative pulls up)
-    #[arg(short, long, default_value_t = GRAVITY)]
-    gravity: f64,
-    /// Share of speed kept at each bounce, 0 to 1
-    #[arg(short, long, default_value_t = BOUNCE_DAMPING)]
-    damping: f64,
-    /// Air drag: share of speed lost per frame, 0 to 1 (the lesson's 0.998 is 0.002) [default: none]
-    #[arg(long)]
-    drag: Option<f64>,
-    /// Ball-ball collisions with this restitution, 0 to 1 [default: none]
-    #[arg(long)]
-    restitution: Option<f64>,
-    /// How each step turns forces into motion
-    #[arg(long, value_enum, default_value_t = Integrator::default())]
-    integrator: Integrator,
-    /// Steps per frame (each frame split into equal steps)
-    #[arg(long, default_value_t = 1)]
-    substeps: u32,
-    /// How wall and floor contacts are resolved
-    #[arg(long, value_enum, default_value_t = CollisionMode::default())]
-    collisions: CollisionMode,
-    /// Contact-solver iterations per step (ball-ball collisions in clamp mode)
-    #[arg(long, default_value_t = DEFAULT_ITERATIONS)]
-    iterations: u32,
-    /// Trail length, points (0: no trail)
-    #[arg(long, default_value_t = TRAIL_LEN)]
-    trail: usize,
-    /// Frames to simulate
-    #[arg(short = 'n', long, default_value_t = FRAMES)]
-    frames: u32,
-    /// Time each frame shows, ms (a multiple of 10)
-    #[arg(long, default_value_t = FRAME_MS)]
-    frame_ms: u32,
+    // --width to --frame-ms: the scene settings, a row each in src/scene/overrides.rs.
+    #[command(flatten)]
+    settings: Overrides,
     /// Where to write the animated GIF
     #[arg(short = 'o', long, default_value = "bouncing_ball.gif")]
     gif: PathBuf,
@@ -186,41 +132,21 @@ fn lesson_scene() -> Scene {
 }
 
 impl Args {
-    /// The values the user typed (not clap's defaults), to lay over the chosen scene.
-    fn overrides(&self, matches: &ArgMatches) -> Overrides {
-        let typed = |id: &str| matches.value_source(id) == Some(ValueSource::CommandLine);
-        Overrides {
-            width: typed("width").then_some(self.width),
-            height: typed("height").then_some(self.height),
-            radius: typed("radius").then_some(self.radius),
-            x: typed("x").then_some(self.x),
-            y: typed("y").then_some(self.y),
-            vx: typed("vx").then_some(self.vx),
-            vy: typed("vy").then_some(self.vy),
-            gravity: typed("gravity").then_some(self.gravity),
-            damping: typed("damping").then_some(self.damping),
-            drag: self.drag,
-            restitution: self.restitution,
-            trail: typed("trail").then_some(self.trail),
-            frames: typed("frames").then_some(self.frames),
-            frame_ms: typed("frame_ms").then_some(self.frame_ms),
-            integrator: typed("integrator").then_some(self.integrator),
-            substeps: typed("substeps").then_some(self.substeps),
-            collisions: typed("collisions").then_some(self.collisions),
-            iterations: typed("iterations").then_some(self.iterations),
-        }
-    }
-
     /// The scene to run: a file, a preset or the lesson's, with the typed flags laid over it.
-    fn scene(&self, matches: &ArgMatches) -> Result<Scene, SceneFileError> {
+    fn scene(&self) -> Result<Scene, SceneFileError> {
         let mut scene = match (&self.scene, &self.preset) {
             (Some(path), _) => scene::file::load(path, self.seed)?,
             (None, Some(name)) => scene::file::preset(name, self.seed)?,
             (None, None) => lesson_scene(),
         };
-        self.overrides(matches).apply(&mut scene);
+        self.settings.apply(&mut scene);
         Ok(scene)
     }
+}
+
+/// The command line, its scene settings showing the lesson's values as their defaults.
+fn command() -> clap::Command {
+    Overrides::defaults_from(&lesson_scene(), Args::command())
 }
 
 /// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
@@ -253,7 +179,7 @@ fn main() -> ExitCode {
             return ExitCode::from(1);
         }
     };
-    let matches = match Args::command().try_get_matches() {
+    let matches = match command().try_get_matches() {
         Ok(matches) => matches,
         Err(error) => return refuse(error),
     };
@@ -264,13 +190,13 @@ fn main() -> ExitCode {
     if let Some(Command::Completions { shell }) = args.command {
         clap_complete::generate(
             shell,
-            &mut Args::command(),
+            &mut command(),
             "bouncing_ball",
             &mut std::io::stdout(),
         );
         return ExitCode::SUCCESS;
     }
-    let scene = match args.scene(&matches) {
+    let scene = match args.scene() {
         Ok(scene) => scene,
         Err(error) => {
             eprintln!("error: {error}");

@@ -6,8 +6,8 @@ use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::simulation::Simulation;
 use bouncing_ball::physics::Integrator;
+use bouncing_ball::scene::Named;
 use bouncing_ball::{BallSpec, Scene};
-use clap::ValueEnum;
 use proptest::prelude::*;
 
 fn ball_in(width: f64, height: f64) -> impl Strategy<Value = BallSpec> {
@@ -51,9 +51,9 @@ fn floor_in(width: f64, height: f64) -> impl Strategy<Value = Floor> {
 
 fn motion() -> impl Strategy<Value = Motion> {
     (
-        proptest::sample::select(Integrator::value_variants()),
+        proptest::sample::select(Integrator::all()),
         1..=4u32,
-        proptest::sample::select(CollisionMode::value_variants()),
+        proptest::sample::select(CollisionMode::all()),
         1..=12u32,
     )
         .prop_map(|(integrator, substeps, collisions, iterations)| Motion {

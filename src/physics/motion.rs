@@ -8,8 +8,7 @@ use super::integrate::exact;
 use super::integrate::integrator::{Forces, Integrator};
 
 /// How a ball's contact with a wall or floor is resolved.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum CollisionMode {
     /// The lesson's: after the step, clamp the ball back to the wall and reflect its velocity.
     #[default]

@@ -187,10 +187,8 @@ fn settings(scene: &Scene) -> Vec<String> {
 }
 
 /// A value as its flag spells it (`semi-implicit-euler`), not as Rust prints it.
-pub fn flag_name(value: impl clap::ValueEnum) -> String {
-    value
-        .to_possible_value()
-        .map_or_else(String::new, |v| v.get_name().to_string())
+pub fn flag_name(value: impl crate::scene::Named) -> String {
+    value.name().to_string()
 }
 
 /// Makes plotters' "sans-serif" the DejaVu Sans compiled into the program, so text needs no

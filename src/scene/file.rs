@@ -291,6 +291,9 @@ struct BallCollisionsFile {
     restitution: f64,
 }
 
+/// A `[[floors]]` table. The physics layer's `Floor` has no serde (as `Integrator` and
+/// `CollisionMode` have none: their names are read in `super::names`), so the file's spelling
+/// of a floor lives here; a hand-written `Deserialize` for `Floor` would be longer than this.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct FloorFile {

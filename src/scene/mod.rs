@@ -2,16 +2,19 @@
 //!
 //! - [`spec`]: the scene itself (canvas, balls, effects, motion), its limits and validation.
 //! - [`file`]: TOML scene files and the bundled presets.
-//! - [`overrides`]: command-line flags laid over a scene.
+//! - [`overrides`]: command-line flags laid over a scene, one table row per setting.
+//! - [`names`]: how flags and files spell the integrators and collision modes.
 //! - [`random`]: the seeded generator behind `[spawn]` (same seed, same scene).
 //!
 //! A scene is a plain description; [`spec::Scene::simulation`] sets it in motion.
 
 pub mod file;
+pub mod names;
 pub mod overrides;
 pub mod random;
 pub mod spec;
 
 pub use file::{preset_names, SceneFileError, PRESETS};
+pub use names::Named;
 pub use overrides::Overrides;
 pub use spec::{BallSpec, InvalidValue, Rgb, Scene};

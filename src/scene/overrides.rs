@@ -1,76 +1,234 @@
 //! Values typed on the command line that replace a scene's own (`--preset moon --damping 1`).
+//!
+//! Each setting is one row of the table at the bottom of this file: its help, its short flag
+//! if any, its name and type, and where it goes in a [`Scene`]. From that row come its flag
+//! (`--frame-ms` for `frame_ms`), its field in [`Overrides`], how [`Overrides::apply`] writes
+//! it, and the default `--help` shows, which is the lesson scene's value (so the constants at
+//! the top of `src/main.rs` stay the defaults). Adding a setting is adding a row.
+
+use clap::builder::ValueParser;
+use clap::parser::ValueSource;
+use clap::{Arg, ArgAction, ArgMatches, Command};
 
 use super::spec::Scene;
-use crate::physics::motion::CollisionMode;
-use crate::physics::Integrator;
-
-/// Each `Some` replaces the scene's value; ball values apply to every ball.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Overrides {
-    pub width: Option<u32>,
-    pub height: Option<u32>,
-    pub radius: Option<f64>,
-    pub x: Option<f64>,
-    pub y: Option<f64>,
-    pub vx: Option<f64>,
-    pub vy: Option<f64>,
-    /// Downward gravity, px/frame²; 0 removes gravity.
-    pub gravity: Option<f64>,
-    /// The walls' damping; adds the box if the scene has none.
-    pub damping: Option<f64>,
-    /// Air drag per frame; 0 removes drag.
-    pub drag: Option<f64>,
-    /// Ball-ball restitution; adds ball-ball collisions if the scene has none.
-    pub restitution: Option<f64>,
-    pub trail: Option<usize>,
-    pub frames: Option<u32>,
-    pub frame_ms: Option<u32>,
-    pub integrator: Option<Integrator>,
-    pub substeps: Option<u32>,
-    pub collisions: Option<CollisionMode>,
-    pub iterations: Option<u32>,
-}
+use crate::physics::{CollisionMode, Integrator};
 
 /// `Some(value)` unless it is zero: a zero-strength effect is no effect, and costs nothing.
 fn unless_zero(value: f64) -> Option<f64> {
     (value != 0.0).then_some(value)
 }
 
-impl Overrides {
-    /// Writes every given value into `scene`.
-    pub fn apply(&self, scene: &mut Scene) {
-        fn set<T: Copy>(target: &mut T, value: Option<T>) {
-            if let Some(v) = value {
-                *target = v;
+/// How a typed value goes into its place in a scene (`put`), and how that place reads back as
+/// the value a flag would have typed (`get`, `None` where the scene has none).
+mod fit {
+    use super::unless_zero;
+
+    /// The value itself (`--frames 50`).
+    pub mod plain {
+        pub fn put<T>(value: T) -> T {
+            value
+        }
+        pub fn get<T: Copy>(place: &T) -> Option<T> {
+            Some(*place)
+        }
+    }
+
+    /// Turns an effect on with this value: `--damping` adds walls to a scene without them.
+    pub mod turns_on {
+        pub fn put(value: f64) -> Option<f64> {
+            Some(value)
+        }
+        pub fn get(place: &Option<f64>) -> Option<f64> {
+            *place
+        }
+    }
+
+    /// An effect's strength; 0 removes the effect (`--drag 0`).
+    pub mod zero_is_off {
+        pub fn put(value: f64) -> Option<f64> {
+            super::unless_zero(value)
+        }
+        pub use super::turns_on::get;
+    }
+
+    /// Downward gravity, px/frame²; 0 removes gravity.
+    pub mod downwards {
+        pub fn put(g: f64) -> Option<[f64; 2]> {
+            super::unless_zero(g).map(|g| [0.0, g])
+        }
+        pub fn get(place: &Option<[f64; 2]>) -> Option<f64> {
+            place.map(|[_, g]| g)
+        }
+    }
+}
+
+/// clap keeps a flag's words as `&'static str` (its `string` feature is off); the command is
+/// built once a run, so the few words made here are kept for the rest of the run.
+fn kept(text: String) -> &'static str {
+    text.leak()
+}
+
+/// The flag of setting `id` (`frame_ms` → `--frame-ms <FRAME_MS>`), as clap's derive makes it.
+fn flag(id: &'static str, short: Option<char>, help: &str, parser: ValueParser) -> Arg {
+    Arg::new(id)
+        .long(kept(id.replace('_', "-")))
+        .short(short)
+        .value_name(kept(id.to_uppercase()))
+        .help(help.trim().to_string())
+        .value_parser(parser)
+        .action(ArgAction::Set)
+}
+
+/// Shows `default` in `arg`'s help (`[default: none]` where the lesson has none: the setting
+/// is off unless typed).
+fn with_default(arg: Arg, default: Option<String>) -> Arg {
+    match default {
+        Some(value) => arg.default_value(kept(value)),
+        None => {
+            let help = arg.get_help().map(ToString::to_string).unwrap_or_default();
+            arg.help(format!("{help} [default: none]"))
+        }
+    }
+}
+
+/// Whether the user typed flag `id` (a default is not a value to lay over a scene).
+fn typed(matches: &ArgMatches, id: &str) -> bool {
+    matches.value_source(id) == Some(ValueSource::CommandLine)
+}
+
+/// Writes the settings' struct, its `apply`, its flags and its defaults from the table below.
+/// A row: help (doc comment), `-'c'` for a short flag, `name: Type`, then where it goes:
+/// `scene.field…` or `ball.field` (every ball; the first ball's is the default), and after a
+/// comma how it fits there (a module of [`fit`]; `plain` if none).
+macro_rules! settings {
+    ($(
+        #[doc = $help:literal]
+        $(-$short:literal)? $name:ident: $ty:ty = $at:ident.$($field:ident).+ $(, $fit:ident)?;
+    )*) => {
+        /// Each `Some` replaces the scene's value; ball values apply to every ball.
+        #[derive(Clone, Debug, Default, PartialEq)]
+        pub struct Overrides {
+            $(#[doc = $help] pub $name: Option<$ty>,)*
+        }
+
+        impl Overrides {
+            /// Writes every given value into `scene`.
+            pub fn apply(&self, scene: &mut Scene) {
+                $(if let Some(value) = self.$name {
+                    settings!(@put scene, $at ($($field).+) [$($fit)?] value);
+                })*
+            }
+
+            /// `command` with each setting's flag showing `scene`'s value as its default.
+            pub fn defaults_from(scene: &Scene, command: Command) -> Command {
+                let defaults = [$((
+                    stringify!($name),
+                    settings!(@get scene, $at ($($field).+) [$($fit)?])
+                        .map(|value: $ty| value.to_string()),
+                )),*];
+                // `mut_args`, not `mut_arg`: that one moves the flag to the end of the list,
+                // which is the order completion scripts give.
+                command.mut_args(|arg| {
+                    match defaults.iter().find(|(id, _)| arg.get_id() == *id) {
+                        Some((_, default)) => with_default(arg, default.clone()),
+                        None => arg,
+                    }
+                })
             }
         }
-        set(&mut scene.width, self.width);
-        set(&mut scene.height, self.height);
-        for ball in &mut scene.balls {
-            set(&mut ball.radius, self.radius);
-            set(&mut ball.x, self.x);
-            set(&mut ball.y, self.y);
-            set(&mut ball.vx, self.vx);
-            set(&mut ball.vy, self.vy);
-            set(&mut ball.trail, self.trail);
+
+        /// The flags, in the table's order (which is `--help`'s).
+        impl clap::Args for Overrides {
+            fn augment_args(command: Command) -> Command {
+                command.args([$(flag(
+                    stringify!($name),
+                    settings!(@short $($short)?),
+                    $help,
+                    clap::value_parser!($ty).into(),
+                )),*])
+            }
+            fn augment_args_for_update(command: Command) -> Command {
+                Self::augment_args(command)
+            }
         }
-        if let Some(g) = self.gravity {
-            scene.gravity = unless_zero(g).map(|g| [0.0, g]);
+
+        /// The flags the user typed; the rest stay `None`.
+        impl clap::FromArgMatches for Overrides {
+            fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+                Ok(Overrides {$(
+                    $name: typed(matches, stringify!($name))
+                        .then(|| matches.get_one::<$ty>(stringify!($name)).copied())
+                        .flatten(),
+                )*})
+            }
+            fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+                *self = Self::from_arg_matches(matches)?;
+                Ok(())
+            }
         }
-        if let Some(drag) = self.drag {
-            scene.drag = unless_zero(drag);
+    };
+
+    (@short) => { None };
+    (@short $short:literal) => { Some($short) };
+
+    (@put $scene:ident, scene ($($field:ident).+) [] $value:ident) => {
+        $scene.$($field).+ = fit::plain::put($value)
+    };
+    (@put $scene:ident, scene ($($field:ident).+) [$fit:ident] $value:ident) => {
+        $scene.$($field).+ = fit::$fit::put($value)
+    };
+    (@put $scene:ident, ball ($field:ident) [] $value:ident) => {
+        for ball in &mut $scene.balls {
+            ball.$field = fit::plain::put($value);
         }
-        if self.damping.is_some() {
-            scene.walls = self.damping;
-        }
-        if self.restitution.is_some() {
-            scene.ball_collisions = self.restitution;
-        }
-        set(&mut scene.frames, self.frames);
-        set(&mut scene.frame_ms, self.frame_ms);
-        set(&mut scene.motion.integrator, self.integrator);
-        set(&mut scene.motion.substeps, self.substeps);
-        set(&mut scene.motion.collisions, self.collisions);
-        set(&mut scene.motion.iterations, self.iterations);
-    }
+    };
+
+    (@get $scene:ident, scene ($($field:ident).+) []) => {
+        fit::plain::get(&$scene.$($field).+)
+    };
+    (@get $scene:ident, scene ($($field:ident).+) [$fit:ident]) => {
+        fit::$fit::get(&$scene.$($field).+)
+    };
+    (@get $scene:ident, ball ($field:ident) []) => {
+        $scene.balls.first().and_then(|ball| fit::plain::get(&ball.$field))
+    };
+}
+
+settings! {
+    /// Canvas width, px
+    width: u32 = scene.width;
+    /// Canvas height, px
+    height: u32 = scene.height;
+    /// Ball radius, px
+    radius: f64 = ball.radius;
+    /// Start position x, px
+    x: f64 = ball.x;
+    /// Start position y, px (y grows downwards)
+    y: f64 = ball.y;
+    /// Start velocity x, px/frame
+    vx: f64 = ball.vx;
+    /// Start velocity y, px/frame
+    vy: f64 = ball.vy;
+    /// Gravity, px/frame² (downwards; negative pulls up)
+    -'g' gravity: f64 = scene.gravity, downwards;
+    /// Share of speed kept at each bounce, 0 to 1
+    -'d' damping: f64 = scene.walls, turns_on;
+    /// Air drag: share of speed lost per frame, 0 to 1 (the lesson's 0.998 is 0.002)
+    drag: f64 = scene.drag, zero_is_off;
+    /// Ball-ball collisions with this restitution, 0 to 1
+    restitution: f64 = scene.ball_collisions, turns_on;
+    /// How each step turns forces into motion
+    integrator: Integrator = scene.motion.integrator;
+    /// Steps per frame (each frame split into equal steps)
+    substeps: u32 = scene.motion.substeps;
+    /// How wall and floor contacts are resolved
+    collisions: CollisionMode = scene.motion.collisions;
+    /// Contact-solver iterations per step (ball-ball collisions in clamp mode)
+    iterations: u32 = scene.motion.iterations;
+    /// Trail length, points (0: no trail)
+    trail: usize = ball.trail;
+    /// Frames to simulate
+    -'n' frames: u32 = scene.frames;
+    /// Time each frame shows, ms (a multiple of 10)
+    frame_ms: u32 = scene.frame_ms;
 }

@@ -30,8 +30,7 @@ impl Movable for Ball {
 }
 
 /// Which integration method advances the balls.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Integrator {
     /// Position first with the old velocity, then velocity: `x += v·dt`, `v += a·dt`.
     ExplicitEuler,
