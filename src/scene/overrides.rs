@@ -62,18 +62,12 @@ mod fit {
     }
 }
 
-/// clap keeps a flag's words as `&'static str` (its `string` feature is off); the command is
-/// built once a run, so the few words made here are kept for the rest of the run.
-fn kept(text: String) -> &'static str {
-    text.leak()
-}
-
 /// The flag of setting `id` (`frame_ms` → `--frame-ms <FRAME_MS>`), as clap's derive makes it.
 fn flag(id: &'static str, short: Option<char>, help: &str, parser: ValueParser) -> Arg {
     Arg::new(id)
-        .long(kept(id.replace('_', "-")))
+        .long(id.replace('_', "-"))
         .short(short)
-        .value_name(kept(id.to_uppercase()))
+        .value_name(id.to_uppercase())
         .help(help.trim().to_string())
         .value_parser(parser)
         .action(ArgAction::Set)
@@ -83,7 +77,7 @@ fn flag(id: &'static str, short: Option<char>, help: &str, parser: ValueParser) 
 /// is off unless typed).
 fn with_default(arg: Arg, default: Option<String>) -> Arg {
     match default {
-        Some(value) => arg.default_value(kept(value)),
+        Some(value) => arg.default_value(value),
         None => {
             let help = arg.get_help().map(ToString::to_string).unwrap_or_default();
             arg.help(format!("{help} [default: none]"))
