@@ -12,13 +12,13 @@
 
 use std::time::Instant;
 
-use bouncing_ball_lab::accuracy::lesson_effects;
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
+use bouncing_ball_lab::accuracy::lesson_effects;
 
 const AIM: f64 = 7.0;
 const REACH: f64 = 10.0;

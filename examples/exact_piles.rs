@@ -10,13 +10,13 @@
 //!
 //! Run: `cargo run --release --example exact_piles` (about 30 s).
 
-use bouncing_ball_lab::accuracy::{deepest_overlap, rms_speed};
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
 use bouncing_ball::scene::random::jittered_lattice;
+use bouncing_ball_lab::accuracy::{deepest_overlap, rms_speed};
 
 const BALLS: usize = 150;
 const RADIUS: f64 = 6.0;

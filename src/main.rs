@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
-use bouncing_ball::scene::{self, preset_names, Overrides, SceneFileError};
+use bouncing_ball::scene::{self, preset_names, InvalidValue, Overrides, SceneFileError};
 use bouncing_ball::stop::Stop;
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene};
 use clap::{ArgAction, CommandFactory, FromArgMatches, Parser, Subcommand};
@@ -72,7 +72,7 @@ struct Args {
     #[arg(short, long, value_parser = preset_names())]
     preset: Option<String>,
     /// Seed for everything random (same seed, same bytes out)
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = whole_number, allow_hyphen_values = true)]
     seed: u64,
     // --width to --frame-ms: the scene settings, a row each in src/scene/overrides.rs.
     #[command(flatten)]
@@ -90,7 +90,8 @@ struct Args {
     #[arg(long, value_name = "PATH")]
     plot: Option<PathBuf>,
     /// Refuse a scene predicted to need more memory than this, MB
-    #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_BUDGET >> 20)]
+    #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_BUDGET >> 20,
+          value_parser = whole_number, allow_hyphen_values = true)]
     memory_budget: u64,
     /// Print nothing on success
     #[arg(short, long)]
@@ -155,19 +156,80 @@ fn flag(key: &str) -> String {
     format!("--{}", name.replace('_', "-"))
 }
 
-/// A command-line error in one line (clap adds usage and tips on more), or help and version
-/// printed as clap prints them.
+/// A command-line error in one line (clap spreads it over several): what was wrong, what is
+/// allowed and, for a near miss, the nearest name. Help and version print as clap prints them.
 fn refuse(error: clap::Error) -> ExitCode {
     use clap::error::ErrorKind::{DisplayHelp, DisplayVersion};
+    use clap::error::{ContextKind, ContextValue};
     if matches!(error.kind(), DisplayHelp | DisplayVersion) {
         error.exit();
     }
-    let text = error.to_string();
-    eprintln!(
-        "{}; see --help",
-        text.lines().next().unwrap_or("error").trim_end()
-    );
+    let text = |kind| match error.get(kind) {
+        Some(ContextValue::String(text)) => Some(text.clone()),
+        Some(ContextValue::Strings(texts)) if !texts.is_empty() => Some(texts.join(" or ")),
+        _ => None,
+    };
+    let mut line = match (
+        text(ContextKind::InvalidArg),
+        text(ContextKind::InvalidValue),
+    ) {
+        // `--width <WIDTH>` and `9000`: said as the user typed it, then why.
+        (Some(arg), Some(value)) => {
+            // A flag is named by its long form; the one value without a flag is the shell.
+            let flag = match arg.split(' ').next().unwrap_or(&arg) {
+                "<SHELL>" => "completions",
+                flag => flag,
+            };
+            match std::error::Error::source(&error) {
+                Some(why) => format!("error: {flag} {value} is not allowed: {why}"),
+                None => format!("error: {flag} {value} is not allowed"),
+            }
+        }
+        _ => error
+            .to_string()
+            .lines()
+            .next()
+            .unwrap_or("error")
+            .trim_end()
+            .to_string(),
+    };
+    if let Some(ContextValue::Strings(allowed)) = error.get(ContextKind::ValidValue) {
+        line += &format!("; allowed: {}", allowed.join(", "));
+    }
+    for kind in [ContextKind::SuggestedValue, ContextKind::SuggestedArg] {
+        if let Some(near) = text(kind) {
+            line += &format!("; did you mean {near}?");
+        }
+    }
+    eprintln!("{line}; see --help");
     ExitCode::from(2)
+}
+
+/// A value the scene cannot take, named as the user knows it: the flag they typed, or the
+/// scene's own value that what they typed no longer fits (`--radius 60` with the default x).
+fn refuse_value(bad: &InvalidValue, settings: &Overrides) -> String {
+    let name = bad.key.rsplit('.').next().unwrap_or(&bad.key);
+    if settings.is_typed(name) {
+        return format!(
+            "{} {} is not allowed: {}",
+            flag(&bad.key),
+            bad.value,
+            bad.allowed
+        );
+    }
+    format!(
+        "the scene's {} = {} (not typed: set it with {}) does not fit what was typed: {}",
+        bad.key,
+        bad.value,
+        flag(&bad.key),
+        bad.allowed
+    )
+}
+
+/// A whole number from 0 up, said so when it is not (`--seed -1`).
+fn whole_number(text: &str) -> Result<u64, String> {
+    text.parse()
+        .map_err(|_| format!("must be a whole number from 0 to {}", u64::MAX))
 }
 
 fn main() -> ExitCode {
@@ -235,12 +297,9 @@ fn main() -> ExitCode {
         }
         Err(error) => {
             match &error {
-                RunError::Invalid(bad) => eprintln!(
-                    "error: {} {} is not allowed: {}",
-                    flag(&bad.key),
-                    bad.value,
-                    bad.allowed
-                ),
+                RunError::Invalid(bad) => {
+                    eprintln!("error: {}", refuse_value(bad, &args.settings))
+                }
                 other => eprintln!("error: {other}"),
             }
             ExitCode::from(error.exit_code())

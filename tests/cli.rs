@@ -236,6 +236,71 @@ fn bad_input_gets_one_line_naming_the_flag_exit_2_and_no_file() {
 }
 
 #[test]
+fn a_flag_error_says_what_is_allowed_and_the_nearest_name_in_one_line() {
+    for (args, says) in [
+        (
+            &["--preset", "mon"][..],
+            &[
+                "--preset mon",
+                "allowed: lesson, elastic",
+                "did you mean moon?",
+            ][..],
+        ),
+        (
+            &["--integrator", "rk5"],
+            &[
+                "--integrator rk5",
+                "allowed: explicit-euler",
+                "did you mean rk4?",
+            ],
+        ),
+        (
+            &["--collisions", "exakt"],
+            &[
+                "--collisions exakt",
+                "allowed: clamp, exact",
+                "did you mean exact?",
+            ],
+        ),
+        (
+            &["completions", "tcsh"],
+            &[
+                "completions tcsh",
+                "allowed: bash, elvish, fish, powershell, zsh",
+            ],
+        ),
+        (
+            &["--gravty", "0.2"],
+            &["'--gravty'", "did you mean --gravity?"],
+        ),
+        (&["--width", "-320"], &["--width -320", "from 1 to 8192"]),
+        (&["--trail", "-1"], &["--trail -1", "from 0 to 1000"]),
+        (&["--seed", "-1"], &["--seed -1", "whole number from 0"]),
+        (&["--x", "-inf"], &["--x -inf", "finite"]),
+        (&["--vy", "-nan"], &["--vy NaN", "finite"]),
+        (
+            &["--radius", "60", "--width", "1920", "--height", "1080"],
+            &[
+                "balls[0].x = 40",
+                "not typed: set it with --x",
+                "60 to 1860 px",
+            ],
+        ),
+    ] {
+        let dir = temp_dir();
+        let output = run_in(dir.path(), args);
+        let err = stderr(&output);
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err:?}");
+        for part in says {
+            assert!(err.contains(part), "{args:?} should say {part:?}: {err}");
+        }
+        let files: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+        assert!(files.is_empty(), "{args:?} left files behind: {files:?}");
+    }
+}
+
+#[test]
 fn the_validation_error_is_a_single_line_saying_what_is_allowed() {
     let output = run_in(&std::env::temp_dir(), &["--damping", "1.5"]);
     let err = stderr(&output);

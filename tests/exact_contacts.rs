@@ -1,9 +1,6 @@
 //! Exact mode for every contact: balls meet at the moment they touch (event-driven), floors
 //! are met at the moment of impact, nothing is clamped afterwards.
 
-use bouncing_ball_lab::accuracy::{
-    deepest_overlap, kinetic_energy, lesson_effects, rms_speed,
-};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;
@@ -14,6 +11,7 @@ use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
 use bouncing_ball::scene::file as scene_file;
 use bouncing_ball::scene::random::jittered_lattice;
+use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy, lesson_effects, rms_speed};
 
 fn exact(integrator: Integrator) -> Motion {
     Motion {

@@ -4,12 +4,12 @@
 
 mod common;
 
-use bouncing_ball_lab::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Integrator;
+use bouncing_ball_lab::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
 
 const INTEGRATORS: [Integrator; 4] = [
     Integrator::ExplicitEuler,
@@ -359,10 +359,10 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
 }
 
 mod ball_ball {
-    use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
     use bouncing_ball::physics::tolerances::SLOP;
     use bouncing_ball::scene::random::Random;
     use bouncing_ball::Scene;
+    use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
 
     use crate::common::white_ball as spec;
 

@@ -6,11 +6,11 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use bouncing_ball_lab::accuracy::{lesson_effects, GRAVITY, RADIUS};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::Integrator;
+use bouncing_ball_lab::accuracy::{lesson_effects, GRAVITY, RADIUS};
 use criterion::{criterion_group, criterion_main, Criterion};
 
 const INTEGRATORS: [Integrator; 4] = [

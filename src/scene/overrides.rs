@@ -6,11 +6,15 @@
 //! it, and the default `--help` shows, which is the lesson scene's value (so the constants at
 //! the top of `src/main.rs` stay the defaults). Adding a setting is adding a row.
 
+use std::ops::RangeInclusive;
+
 use clap::builder::ValueParser;
 use clap::parser::ValueSource;
 use clap::{Arg, ArgAction, ArgMatches, Command};
 
-use super::spec::Scene;
+use super::spec::{
+    Scene, MAX_CANVAS_SIDE, MAX_FRAME_MS, MAX_ITERATIONS, MAX_SUBSTEPS, MAX_TRAIL_LEN,
+};
 use crate::physics::{CollisionMode, Integrator};
 
 /// `Some(value)` unless it is zero: a zero-strength effect is no effect, and costs nothing.
@@ -62,6 +66,25 @@ mod fit {
     }
 }
 
+/// A parser of whole numbers in `range` that says the range when a value is outside it or no
+/// whole number at all (`-320`, `1.5`, `ten`).
+fn whole_number_in<T>(
+    range: RangeInclusive<i64>,
+) -> impl Fn(&str) -> Result<T, String> + Clone + Send + Sync + 'static
+where
+    T: TryFrom<i64> + Clone + Send + Sync + 'static,
+{
+    move |text| {
+        let (low, high) = (*range.start(), *range.end());
+        text.trim()
+            .parse::<i64>()
+            .ok()
+            .filter(|n| range.contains(n))
+            .and_then(|n| T::try_from(n).ok())
+            .ok_or_else(|| format!("must be a whole number from {low} to {high}"))
+    }
+}
+
 /// The flag of setting `id` (`frame_ms` → `--frame-ms <FRAME_MS>`), as clap's derive makes it.
 fn flag(id: &'static str, short: Option<char>, help: &str, parser: ValueParser) -> Arg {
     Arg::new(id)
@@ -70,6 +93,9 @@ fn flag(id: &'static str, short: Option<char>, help: &str, parser: ValueParser) 
         .value_name(id.to_uppercase())
         .help(help.trim().to_string())
         .value_parser(parser)
+        // A value may start with a minus sign, `-inf` and `-nan` too (clap's own test for a
+        // negative number knows only digits): it then gets the number's own message.
+        .allow_hyphen_values(true)
         .action(ArgAction::Set)
 }
 
@@ -97,7 +123,7 @@ fn typed(matches: &ArgMatches, id: &str) -> bool {
 macro_rules! settings {
     ($(
         #[doc = $help:literal]
-        $(-$short:literal)? $name:ident: $ty:ty = $at:ident.$($field:ident).+ $(, $fit:ident)?;
+        $(-$short:literal)? $name:ident: $ty:ty $([$range:expr])? = $at:ident.$($field:ident).+ $(, $fit:ident)?;
     )*) => {
         /// Each `Some` replaces the scene's value; ball values apply to every ball.
         #[derive(Clone, Debug, Default, PartialEq)]
@@ -111,6 +137,14 @@ macro_rules! settings {
                 $(if let Some(value) = self.$name {
                     settings!(@put scene, $at ($($field).+) [$($fit)?] value);
                 })*
+            }
+
+            /// Whether the setting `name` (`frame_ms`) was typed.
+            pub fn is_typed(&self, name: &str) -> bool {
+                match name {
+                    $(stringify!($name) => self.$name.is_some(),)*
+                    _ => false,
+                }
             }
 
             /// `command` with each setting's flag showing `scene`'s value as its default.
@@ -138,7 +172,7 @@ macro_rules! settings {
                     stringify!($name),
                     settings!(@short $($short)?),
                     $help,
-                    clap::value_parser!($ty).into(),
+                    settings!(@parser $ty $(, $range)?),
                 )),*])
             }
             fn augment_args_for_update(command: Command) -> Command {
@@ -165,6 +199,11 @@ macro_rules! settings {
     (@short) => { None };
     (@short $short:literal) => { Some($short) };
 
+    // A whole number is read as any integer and held to its real range, so `--width -320`
+    // says `-320 is not in 1..=8192`, not that a minus sign is an invalid digit.
+    (@parser $ty:ty) => { clap::value_parser!($ty).into() };
+    (@parser $ty:ty, $range:expr) => { ValueParser::new(whole_number_in::<$ty>($range)) };
+
     (@put $scene:ident, scene ($($field:ident).+) [] $value:ident) => {
         $scene.$($field).+ = fit::plain::put($value)
     };
@@ -190,9 +229,9 @@ macro_rules! settings {
 
 settings! {
     /// Canvas width, px
-    width: u32 = scene.width;
+    width: u32 [1..=i64::from(MAX_CANVAS_SIDE)] = scene.width;
     /// Canvas height, px
-    height: u32 = scene.height;
+    height: u32 [1..=i64::from(MAX_CANVAS_SIDE)] = scene.height;
     /// Ball radius, px
     radius: f64 = ball.radius;
     /// Start position x, px
@@ -214,15 +253,15 @@ settings! {
     /// How each step turns forces into motion
     integrator: Integrator = scene.motion.integrator;
     /// Steps per frame (each frame split into equal steps)
-    substeps: u32 = scene.motion.substeps;
+    substeps: u32 [1..=i64::from(MAX_SUBSTEPS)] = scene.motion.substeps;
     /// How wall and floor contacts are resolved
     collisions: CollisionMode = scene.motion.collisions;
     /// Contact-solver iterations per step (ball-ball collisions in clamp mode)
-    iterations: u32 = scene.motion.iterations;
+    iterations: u32 [1..=i64::from(MAX_ITERATIONS)] = scene.motion.iterations;
     /// Trail length, points (0: no trail)
-    trail: usize = ball.trail;
+    trail: usize [0..=MAX_TRAIL_LEN as i64] = ball.trail;
     /// Frames to simulate
-    -'n' frames: u32 = scene.frames;
+    -'n' frames: u32 [1..=i64::from(u32::MAX)] = scene.frames;
     /// Time each frame shows, ms (a multiple of 10)
-    frame_ms: u32 = scene.frame_ms;
+    frame_ms: u32 [0..=i64::from(MAX_FRAME_MS)] = scene.frame_ms;
 }
