@@ -174,7 +174,7 @@ fn refuse(error: clap::Error) -> ExitCode {
         text(ContextKind::InvalidValue),
     ) {
         // `--width <WIDTH>` and `9000`: said as the user typed it, then why.
-        (Some(arg), Some(value)) => {
+        (Some(arg), Some(value)) if !value.is_empty() => {
             // A flag is named by its long form; the one value without a flag is the shell.
             let flag = match arg.split(' ').next().unwrap_or(&arg) {
                 "<SHELL>" => "completions",
@@ -194,7 +194,9 @@ fn refuse(error: clap::Error) -> ExitCode {
             .to_string(),
     };
     if let Some(ContextValue::Strings(allowed)) = error.get(ContextKind::ValidValue) {
-        line += &format!("; allowed: {}", allowed.join(", "));
+        if !allowed.is_empty() {
+            line += &format!("; allowed: {}", allowed.join(", "));
+        }
     }
     for kind in [ContextKind::SuggestedValue, ContextKind::SuggestedArg] {
         if let Some(near) = text(kind) {

@@ -20,32 +20,62 @@ pub fn is_stdout(path: &Path) -> bool {
     path.as_os_str() == STDOUT
 }
 
-/// One output a run writes: the flag that names it, the path, and whether `-` may stand for
-/// standard output (a stream can go there; a GIF or PNG on a terminal would be garbage).
+/// One output a run writes: the flag that names it, the path, whether `-` may stand for
+/// standard output (a stream can go there; a GIF or PNG on a terminal would be garbage), and
+/// the picture format it writes, if it writes one.
 #[derive(Clone, Copy, Debug)]
 pub struct Output<'a> {
     pub flag: &'static str,
     pub path: &'a Path,
     pub may_be_stdout: bool,
+    pub format: Option<&'static str>,
 }
 
+/// The picture formats the program writes, by extension: a path that ends in one of them gets
+/// that format, so `--gif a.png` is a mistake (GIF bytes in a file every viewer opens as PNG).
+const PICTURE_FORMATS: [&str; 3] = ["gif", "png", "svg"];
+
 impl Output<'_> {
-    /// A file output (a GIF, a PNG): `-` is refused.
+    /// A file output whose format the flag fixes (`--gif`, `--png`): `-` is refused, and so is
+    /// a name ending in another picture format's extension.
+    pub fn picture<'a>(flag: &'static str, path: &'a Path, format: &'static str) -> Output<'a> {
+        Output {
+            format: Some(format),
+            ..Output::file(flag, path)
+        }
+    }
+
+    /// A file output (`--plot`, whose extension picks its format): `-` is refused.
     pub fn file<'a>(flag: &'static str, path: &'a Path) -> Output<'a> {
         Output {
             flag,
             path,
             may_be_stdout: false,
+            format: None,
         }
     }
 
     /// A stream output (the trace): `-` is standard output.
     pub fn stream<'a>(flag: &'static str, path: &'a Path) -> Output<'a> {
         Output {
-            flag,
-            path,
             may_be_stdout: true,
+            ..Output::file(flag, path)
         }
+    }
+
+    /// Why the path's extension names another picture format than this output writes, if it
+    /// does (`--gif a.png`).
+    fn wrong_format(&self) -> Option<String> {
+        let format = self.format?;
+        let extension = self.path.extension()?.to_str()?.to_ascii_lowercase();
+        if extension == format || !PICTURE_FORMATS.contains(&extension.as_str()) {
+            return None;
+        }
+        Some(format!(
+            "ends in .{extension}, but {} writes a {}; give a name ending in .{format}",
+            self.flag,
+            format.to_uppercase()
+        ))
     }
 }
 
@@ -207,7 +237,8 @@ pub fn check(outputs: &[Output], scene_file: Option<&Path>) -> Result<(), Output
         why,
     };
     for output in outputs {
-        if let Some(why) = unusable(output.path, output.may_be_stdout) {
+        let why = unusable(output.path, output.may_be_stdout).or_else(|| output.wrong_format());
+        if let Some(why) = why {
             return Err(refuse(output, why));
         }
     }

@@ -62,8 +62,8 @@ impl Outputs {
     /// of output is one more entry here (and one more file in [`Files`]).
     pub fn list(&self) -> Vec<Output<'_>> {
         let mut list = vec![
-            Output::file("--gif", &self.gif),
-            Output::file("--png", &self.png),
+            Output::picture("--gif", &self.gif, "gif"),
+            Output::picture("--png", &self.png, "png"),
         ];
         if let Some(path) = &self.trace {
             list.push(Output::stream("--trace", path));

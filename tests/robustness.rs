@@ -74,6 +74,27 @@ fn an_output_that_is_not_a_regular_file_is_refused_before_any_work() {
     );
 }
 
+#[test]
+fn an_output_named_for_the_other_picture_format_is_refused_before_any_work() {
+    let dir = OddFolder::new();
+    assert_outputs_refused(
+        dir.path(),
+        &[
+            (
+                "--gif",
+                "a.png",
+                "--gif writes a GIF; give a name ending in .gif",
+            ),
+            ("--gif", "a.SVG", "give a name ending in .gif"),
+            (
+                "--png",
+                "b.gif",
+                "--png writes a PNG; give a name ending in .png",
+            ),
+        ],
+    );
+}
+
 #[cfg(unix)]
 #[test]
 fn an_output_that_is_a_fifo_a_socket_or_a_link_to_one_is_refused_before_any_work() {
@@ -115,13 +136,10 @@ fn two_outputs_naming_one_file_or_the_scene_file_are_refused() {
     let dir = OddFolder::new();
     for (list, says) in [
         (
-            &["--gif", "o.gif", "--png", "o.gif"][..],
-            "same file as --gif o.gif",
+            &["--gif", "out", "--png", "out"][..],
+            "same file as --gif out",
         ),
-        (
-            &["--gif", "o.gif", "--png", "./o.gif"],
-            "same file as --gif",
-        ),
+        (&["--gif", "out", "--png", "./out"], "same file as --gif"),
         (
             &["--scene", "my.toml", "--gif", "my.toml"],
             "is the scene file",
@@ -584,7 +602,7 @@ fn a_bad_scene_file_or_value_is_named_in_one_line() {
         dir.path(),
         &["--frames", "ten"],
         2,
-        "invalid value 'ten' for '--frames <FRAMES>'",
+        "--frames ten is not allowed: must be a whole number from 1",
     );
     assert_refused(
         dir.path(),
