@@ -8,7 +8,7 @@ use std::process::ExitCode;
 use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
 use bouncing_ball::scene::{self, preset_names, InvalidValue, Overrides, SceneFileError};
 use bouncing_ball::stop::Stop;
-use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene};
+use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene, Summary};
 use clap::{ArgAction, CommandFactory, FromArgMatches, Parser, Subcommand};
 use clap_complete::Shell;
 
@@ -156,6 +156,29 @@ fn flag(key: &str) -> String {
     format!("--{}", name.replace('_', "-"))
 }
 
+/// What a run wrote, in one line: every file with its size, the GIF's frames, the time.
+fn summary_line(summary: &Summary) -> String {
+    let files: Vec<String> = summary
+        .files
+        .iter()
+        .enumerate()
+        .map(|(k, (path, bytes))| match k {
+            0 => format!(
+                "{} ({} frames, {bytes} bytes)",
+                path.display(),
+                summary.frames
+            ),
+            _ => format!("{} ({bytes} bytes)", path.display()),
+        })
+        .collect();
+    let list = match files.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        _ => files.join(""),
+    };
+    let ms = summary.elapsed.as_secs_f64() * 1000.0;
+    format!("wrote {list} in {ms:.1} ms")
+}
+
 /// A command-line error in one line (clap spreads it over several): what was wrong, what is
 /// allowed and, for a near miss, the nearest name. Help and version print as clap prints them.
 fn refuse(error: clap::Error) -> ExitCode {
@@ -279,15 +302,7 @@ fn main() -> ExitCode {
     match run(&scene, &outputs) {
         Ok(summary) => {
             if !args.quiet {
-                let line = format!(
-                    "wrote {} ({} frames, {} bytes) and {} ({} bytes) in {:.1} ms",
-                    outputs.gif.display(),
-                    summary.frames,
-                    summary.gif_bytes,
-                    outputs.png.display(),
-                    summary.png_bytes,
-                    summary.elapsed.as_secs_f64() * 1000.0
-                );
+                let line = summary_line(&summary);
                 // Standard output may carry the trace, or be a closed pipe: never fail on it.
                 let _ = if outputs.trace_on_stdout() {
                     writeln!(std::io::stderr(), "{line}")

@@ -95,8 +95,9 @@ impl Outputs {
 #[derive(Clone, Debug)]
 pub struct Summary {
     pub frames: u32,
-    pub gif_bytes: u64,
-    pub png_bytes: u64,
+    /// Every file written and its size in bytes, in the order of [`Outputs::list`] (the GIF
+    /// first, the PNG second; a trace sent to standard output is not a file).
+    pub files: Vec<(PathBuf, u64)>,
     pub elapsed: Duration,
 }
 
@@ -198,10 +199,13 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     // The last moment a signal stops the run; from here on the files go into place.
     stop_if_asked(outputs, scene.frames, scene.frames)?;
     let sizes = files.commit()?;
+    let written = outputs
+        .list()
+        .into_iter()
+        .filter(|o| !output::is_stdout(o.path));
     Ok(Summary {
         frames: scene.frames,
-        gif_bytes: sizes[0],
-        png_bytes: sizes[1],
+        files: written.map(|o| o.path.to_path_buf()).zip(sizes).collect(),
         elapsed: started.elapsed(),
     })
 }

@@ -236,6 +236,23 @@ fn bad_input_gets_one_line_naming_the_flag_exit_2_and_no_file() {
 }
 
 #[test]
+fn the_summary_names_every_file_written() {
+    let dir = temp_dir();
+    let args = [
+        "-n", "3", "--trace", "t.csv", "--plot", "p.svg", "-o", "a.gif", "--png", "b.png",
+    ];
+    let output = run_in(dir.path(), &args);
+    let summary = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{}", stderr(&output));
+    for name in ["a.gif (3 frames,", "b.png (", "t.csv (", "p.svg ("] {
+        assert!(
+            summary.contains(name),
+            "the summary should name {name}: {summary}"
+        );
+    }
+}
+
+#[test]
 fn a_flag_error_says_what_is_allowed_and_the_nearest_name_in_one_line() {
     for (args, says) in [
         (
