@@ -103,7 +103,7 @@ struct Args {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Print a shell completion script (e.g. `bouncing_ball completions bash > ~/.bash_completion.d/bouncing_ball`)
+    /// Print a shell completion script, for an installed binary (`cargo install --path .`), e.g. `bouncing_ball completions bash > ~/.local/share/bash-completion/completions/bouncing_ball`
     Completions {
         /// The shell to complete for
         shell: Shell,
