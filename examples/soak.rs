@@ -8,9 +8,9 @@
 
 use std::time::Instant;
 
-use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
 use bouncing_ball::physics::motion::CollisionMode;
 use bouncing_ball::scene::file as scene_file;
+use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
 
 fn main() {
     let frames: u64 = std::env::args()

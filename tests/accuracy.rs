@@ -4,14 +4,14 @@
 
 mod common;
 
-use bouncing_ball_lab::accuracy::{
-    apex_height, bounces, fitted_order, free_flight_error, lesson_effects, FLOOR, GRAVITY, RADIUS,
-    WIDTH,
-};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::tolerances::REST_SPEED;
 use bouncing_ball::physics::Integrator;
+use bouncing_ball_lab::accuracy::{
+    apex_height, bounces, fitted_order, free_flight_error, lesson_effects, FLOOR, GRAVITY, RADIUS,
+    WIDTH,
+};
 
 /// Released from rest at y 40: 188 px above the floor's contact line.
 const DROP: f64 = FLOOR - 40.0;

@@ -2,12 +2,12 @@
 //! parting pairs left alone, balls spawned on one spot separating without being set moving,
 //! the same bytes twice; and the grid broad phase against a brute-force search.
 
-use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::contacts::Grid;
 use bouncing_ball::physics::simulation::Simulation;
 use bouncing_ball::physics::tolerances::SLOP;
 use bouncing_ball::Scene;
+use bouncing_ball_lab::accuracy::{deepest_overlap, kinetic_energy};
 use common::white_ball as spec;
 use proptest::prelude::*;
 

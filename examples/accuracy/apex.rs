@@ -6,10 +6,10 @@
 use std::path::Path;
 
 use bouncing_ball::output::OutputError;
-use bouncing_ball_lab::accuracy::{bounces, Bounce};
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::plot::{flag_name, save_png};
+use bouncing_ball_lab::accuracy::{bounces, Bounce};
 use plotters::prelude::*;
 
 /// One run of the finding: how it is labelled and coloured, and its bounces.

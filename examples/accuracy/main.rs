@@ -14,12 +14,12 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use bouncing_ball::output::OutputError;
-use bouncing_ball_lab::accuracy::{
-    apex_height, bounces, energy_drift, fitted_order, free_flight_error, FLOOR, GRAVITY,
-};
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::plot::{flag_name, save_png};
+use bouncing_ball_lab::accuracy::{
+    apex_height, bounces, energy_drift, fitted_order, free_flight_error, FLOOR, GRAVITY,
+};
 use plotters::prelude::*;
 
 const SUBSTEPS: [u32; 7] = [1, 2, 4, 8, 16, 32, 64];
