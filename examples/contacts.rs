@@ -16,8 +16,9 @@
 
 use std::time::Instant;
 
-use bouncing_ball::scene::file::{pile, preset};
+use bouncing_ball::scene::file::preset;
 use bouncing_ball_lab::accuracy::{deepest_overlap, lowest_pile, pile_height, rms_speed};
+use bouncing_ball_lab::scenes::pile;
 
 const FRAMES: u32 = 10_000;
 /// The last frames, in which the heap must be at rest.

@@ -18,6 +18,7 @@ use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
+use bouncing_ball::physics::Vec2;
 use bouncing_ball_lab::accuracy::lesson_effects;
 
 const AIM: f64 = 7.0;
@@ -101,9 +102,9 @@ fn main() {
         println!("{name:<20} {:>22} {:>22}", cells[0], cells[1]);
     }
     // A floor with both ends free, and a valley whose sides end on the walls.
-    let segment = |from, to| Floor {
-        from,
-        to,
+    let segment = |from: [f64; 2], to: [f64; 2]| Floor {
+        from: Vec2::from(from),
+        to: Vec2::from(to),
         damping: 1.0,
     };
     let flat = vec![segment([20.0, 210.0], [300.0, 210.0])];

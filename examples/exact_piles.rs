@@ -15,6 +15,7 @@ use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
+use bouncing_ball::physics::Vec2;
 use bouncing_ball::scene::random::jittered_lattice;
 use bouncing_ball_lab::accuracy::{deepest_overlap, rms_speed};
 
@@ -30,7 +31,7 @@ const SEEDS: u64 = 12;
 /// frame, capped frames).
 fn pile(seed: u64, integrator: Integrator) -> (f64, f64, u64, u64) {
     let effects = Effects {
-        gravity: Some([0.0, 0.5]),
+        gravity: Some(Vec2::new(0.0, 0.5)),
         walls: Some(Walls {
             width: WIDTH,
             height: 240.0,

@@ -3,11 +3,12 @@
 //! laws. `docs/contacts.md` has the figures these bounds come from.
 
 use bouncing_ball::physics::ball::Ball;
-use bouncing_ball::scene::file::{pile, preset};
+use bouncing_ball::scene::file::preset;
 use bouncing_ball::{BallSpec, Scene};
 use bouncing_ball_lab::accuracy::{
     deepest_overlap, kinetic_energy, lowest_pile, pile_height, rms_speed,
 };
+use bouncing_ball_lab::scenes::pile;
 use common::white_ball as spec;
 use proptest::prelude::*;
 

@@ -6,6 +6,7 @@ use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::tolerances::MAX_EVENTS_PER_BALL;
+use bouncing_ball::physics::vec2::Vec2;
 use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::physics::Simulation;
@@ -196,19 +197,19 @@ fn elastic_box_with(floors: Vec<Floor>) -> Effects {
 #[test]
 fn an_elastic_ball_on_a_flat_floor_or_in_a_valley_keeps_its_energy_exactly() {
     let flat = vec![Floor {
-        from: [40.0, 200.0],
-        to: [280.0, 200.0],
+        from: Vec2::new(40.0, 200.0),
+        to: Vec2::new(280.0, 200.0),
         damping: 1.0,
     }];
     let valley = vec![
         Floor {
-            from: [0.0, 100.0],
-            to: [160.0, 220.0],
+            from: Vec2::new(0.0, 100.0),
+            to: Vec2::new(160.0, 220.0),
             damping: 1.0,
         },
         Floor {
-            from: [160.0, 220.0],
-            to: [320.0, 100.0],
+            from: Vec2::new(160.0, 220.0),
+            to: Vec2::new(320.0, 100.0),
             damping: 1.0,
         },
     ];
@@ -237,7 +238,7 @@ const PILE_SEEDS: u64 = 12;
 #[test]
 fn the_150_ball_pile_comes_to_rest_without_overlap_and_every_frame_finishes() {
     let effects = Effects {
-        gravity: Some([0.0, 0.5]),
+        gravity: Some(Vec2::new(0.0, 0.5)),
         walls: Some(Walls {
             width: 320.0,
             height: 240.0,

@@ -5,8 +5,9 @@ use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::Motion;
+use bouncing_ball::physics::vec2::Vec2;
 
-fn floor_only(floor: Floor, gravity: Option<[f64; 2]>) -> Effects {
+fn floor_only(floor: Floor, gravity: Option<Vec2>) -> Effects {
     Effects {
         gravity,
         floors: vec![floor],
@@ -16,17 +17,17 @@ fn floor_only(floor: Floor, gravity: Option<[f64; 2]>) -> Effects {
 
 /// Signed distance of the ball's centre from the floor's line, positive on the normal's side.
 fn height_above(floor: &Floor, ball: &Ball) -> f64 {
-    let (dx, dy) = (floor.to[0] - floor.from[0], floor.to[1] - floor.from[1]);
+    let (dx, dy) = (floor.to.x - floor.from.x, floor.to.y - floor.from.y);
     let length = dx.hypot(dy);
-    ((ball.x - floor.from[0]) * dy - (ball.y - floor.from[1]) * dx) / length
+    ((ball.x - floor.from.x) * dy - (ball.y - floor.from.y) * dx) / length
 }
 
 #[test]
 fn a_ball_ten_diameters_per_frame_does_not_tunnel_through_a_floor() {
     // Horizontal floor at y = 200 (normal points up, towards smaller y... from → to leftwards).
     let floor = Floor {
-        from: [300.0, 200.0],
-        to: [0.0, 200.0],
+        from: Vec2::new(300.0, 200.0),
+        to: Vec2::new(0.0, 200.0),
         damping: 1.0,
     };
     let mut ball = Ball::new(150.0, 100.0, 0.0, 100.0, 5.0, 0); // 100 px/frame = 10 diameters
@@ -50,8 +51,8 @@ fn a_ball_ten_diameters_per_frame_does_not_tunnel_through_a_floor() {
 fn a_bounce_flips_the_normal_speed_with_damping_and_keeps_the_tangential_speed() {
     // A 45° floor; the ball falls straight down onto it.
     let floor = Floor {
-        from: [200.0, 0.0],
-        to: [0.0, 200.0],
+        from: Vec2::new(200.0, 0.0),
+        to: Vec2::new(0.0, 200.0),
         damping: 0.5,
     };
     let mut ball = Ball::new(100.0, 80.0, 0.0, 20.0, 5.0, 0);
@@ -80,12 +81,12 @@ fn a_bounce_flips_the_normal_speed_with_damping_and_keeps_the_tangential_speed()
 #[test]
 fn a_ball_resting_on_a_slope_does_not_sink_into_it() {
     let floor = Floor {
-        from: [320.0, 240.0],
-        to: [0.0, 140.0],
+        from: Vec2::new(320.0, 240.0),
+        to: Vec2::new(0.0, 140.0),
         damping: 0.88,
     };
     let mut ball = Ball::new(160.0, 178.0, 0.0, 0.0, 12.0, 0);
-    let effects = floor_only(floor, Some([0.0, 0.5]));
+    let effects = floor_only(floor, Some(Vec2::new(0.0, 0.5)));
     let mut lowest = f64::INFINITY;
     for _ in 0..200 {
         Motion::default().advance(&mut ball, &effects);
@@ -103,8 +104,8 @@ fn a_ball_resting_on_a_slope_does_not_sink_into_it() {
 fn a_ball_hitting_an_end_point_bounces_off_it_as_off_a_point() {
     // The segment ends at (100, 100); the ball comes straight down onto that point.
     let floor = Floor {
-        from: [0.0, 100.0],
-        to: [100.0, 100.0],
+        from: Vec2::new(0.0, 100.0),
+        to: Vec2::new(100.0, 100.0),
         damping: 1.0,
     };
     let mut ball = Ball::new(104.0, 80.0, 0.0, 14.0, 10.0, 0);

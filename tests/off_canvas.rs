@@ -6,6 +6,7 @@ mod common;
 
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::floor::Floor;
+use bouncing_ball::physics::vec2::Vec2;
 use bouncing_ball::render::{IndexedFrame, Renderer};
 use bouncing_ball::Scene;
 use common::lesson_scene;
@@ -57,8 +58,8 @@ fn balls_and_trails_far_off_the_canvas_draw_nothing() {
 #[test]
 fn a_floor_from_minus_1e30_to_1e30_draws_exactly_its_row_across_the_canvas() {
     let floor = Floor {
-        from: [-1e30, 120.0],
-        to: [1e30, 120.0],
+        from: Vec2::new(-1e30, 120.0),
+        to: Vec2::new(1e30, 120.0),
         damping: 1.0,
     };
     let (_, frame) = draw(vec![floor], &[]);
@@ -69,8 +70,8 @@ fn a_floor_from_minus_1e30_to_1e30_draws_exactly_its_row_across_the_canvas() {
 #[test]
 fn a_diagonal_floor_reaching_1e30_draws_only_its_diagonal_on_the_canvas() {
     let floor = Floor {
-        from: [-1e30, -1e30],
-        to: [1e30, 1e30],
+        from: Vec2::new(-1e30, -1e30),
+        to: Vec2::new(1e30, 1e30),
         damping: 1.0,
     };
     let (_, frame) = draw(vec![floor], &[]);
@@ -90,8 +91,8 @@ fn a_diagonal_floor_reaching_1e30_draws_only_its_diagonal_on_the_canvas() {
 #[test]
 fn a_floor_wholly_off_the_canvas_draws_nothing() {
     let floor = Floor {
-        from: [-1e30, -5.0],
-        to: [1e30, -5.0],
+        from: Vec2::new(-1e30, -5.0),
+        to: Vec2::new(1e30, -5.0),
         damping: 1.0,
     };
     let (_, frame) = draw(vec![floor], &[]);

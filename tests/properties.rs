@@ -5,6 +5,7 @@
 use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::simulation::Simulation;
+use bouncing_ball::physics::vec2::Vec2;
 use bouncing_ball::physics::Integrator;
 use bouncing_ball::scene::Named;
 use bouncing_ball::{BallSpec, Scene};
@@ -43,8 +44,8 @@ fn floor_in(width: f64, height: f64) -> impl Strategy<Value = Floor> {
             (x1 - x0).hypot(y1 - y0) > 1.0
         })
         .prop_map(|(x0, y0, x1, y1, damping)| Floor {
-            from: [x0, y0],
-            to: [x1, y1],
+            from: Vec2::new(x0, y0),
+            to: Vec2::new(x1, y1),
             damping,
         })
 }

@@ -7,6 +7,7 @@ mod common;
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
+use bouncing_ball::physics::vec2::Vec2;
 use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Integrator;
 use bouncing_ball_lab::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
@@ -37,7 +38,7 @@ fn motions(substeps: &[u32]) -> Vec<Motion> {
     all
 }
 
-fn boxed(width: f64, height: f64, damping: f64, gravity: Option<[f64; 2]>) -> Effects {
+fn boxed(width: f64, height: f64, damping: f64, gravity: Option<Vec2>) -> Effects {
     Effects {
         gravity,
         walls: Some(Walls {
@@ -212,7 +213,7 @@ fn without_gravity_an_elastic_ball_keeps_its_speed_to_the_bit() {
 
 #[test]
 fn extreme_magnitudes_stay_finite_and_inside() {
-    let lesson = |gravity| boxed(320.0, 240.0, 0.88, Some([0.0, gravity]));
+    let lesson = |gravity| boxed(320.0, 240.0, 0.88, Some(Vec2::new(0.0, gravity)));
     let cases = [
         (
             "gravity 1e-12",
@@ -231,12 +232,12 @@ fn extreme_magnitudes_stay_finite_and_inside() {
         ),
         (
             "2·radius just under the width",
-            boxed(100.0, 300.0, 0.88, Some([0.0, 0.5])),
+            boxed(100.0, 300.0, 0.88, Some(Vec2::new(0.0, 0.5))),
             Ball::new(50.0, 100.0, 3.0, 0.0, 49.999_999, 0),
         ),
         (
             "a 1-px ball in an 8192 canvas",
-            boxed(8192.0, 8192.0, 0.88, Some([0.0, 0.5])),
+            boxed(8192.0, 8192.0, 0.88, Some(Vec2::new(0.0, 0.5))),
             Ball::new(4000.0, 100.0, 37.3, -12.9, 0.5, 0),
         ),
     ];
@@ -326,17 +327,17 @@ fn a_fast_ball_at_a_steep_slope_does_not_tunnel_and_a_resting_one_does_not_sink(
     // A 60° slope from the top wall to the bottom wall, so no ball can go around its ends;
     // balls thrown at it at up to 30 diameters per frame.
     let slope = Floor {
-        from: [330.0, 0.0],
-        to: [100.0, 400.0],
+        from: Vec2::new(330.0, 0.0),
+        to: Vec2::new(100.0, 400.0),
         damping: 0.88,
     };
     let side = |b: &Ball| {
-        let (dx, dy) = (slope.to[0] - slope.from[0], slope.to[1] - slope.from[1]);
-        ((b.x - slope.from[0]) * dy - (b.y - slope.from[1]) * dx) / dx.hypot(dy)
+        let (dx, dy) = (slope.to.x - slope.from.x, slope.to.y - slope.from.y);
+        ((b.x - slope.from.x) * dy - (b.y - slope.from.y) * dx) / dx.hypot(dy)
     };
     let effects = Effects {
         floors: vec![slope],
-        ..boxed(400.0, 400.0, 0.88, Some([0.0, 0.5]))
+        ..boxed(400.0, 400.0, 0.88, Some(Vec2::new(0.0, 0.5)))
     };
     for (vx, vy) in [(300.0, 40.0), (150.0, 150.0), (250.0, -100.0)] {
         let mut ball = Ball::new(60.0, 150.0, vx, vy, 5.0, 0);

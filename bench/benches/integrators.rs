@@ -9,7 +9,7 @@ use std::time::Duration;
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
-use bouncing_ball::physics::Integrator;
+use bouncing_ball::physics::{Integrator, Vec2};
 use bouncing_ball_lab::accuracy::{lesson_effects, GRAVITY, RADIUS};
 use criterion::{criterion_group, criterion_main, Criterion};
 
@@ -49,7 +49,7 @@ fn per_frame(c: &mut Criterion) {
         &[CollisionMode::Clamp, CollisionMode::Exact],
     );
     let drag = Effects {
-        gravity: Some([0.0, GRAVITY]),
+        gravity: Some(Vec2::new(0.0, GRAVITY)),
         drag: Some(0.01),
         ..Effects::default()
     };

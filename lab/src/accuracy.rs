@@ -6,7 +6,7 @@
 
 pub use bouncing_ball::physics::ball::kinetic_energy;
 use bouncing_ball::physics::contacts::Grid;
-use bouncing_ball::physics::{maths, Ball, Effects, Motion, Walls};
+use bouncing_ball::physics::{maths, Ball, Effects, Motion, Vec2, Walls};
 
 /// The lesson's canvas, px.
 pub const WIDTH: f64 = 320.0;
@@ -41,7 +41,7 @@ pub fn apex_height(h: f64, e: f64, k: i32) -> f64 {
 /// The lesson's gravity and a `width` × `height` box with `damping`.
 pub fn lesson_effects(damping: f64) -> Effects {
     Effects {
-        gravity: Some([0.0, GRAVITY]),
+        gravity: Some(Vec2::new(0.0, GRAVITY)),
         walls: Some(Walls {
             width: WIDTH,
             height: HEIGHT,
@@ -56,7 +56,7 @@ pub fn lesson_effects(damping: f64) -> Effects {
 /// `frames` frames and where the closed form does.
 pub fn free_flight_error(motion: Motion, drag: f64, frames: u32) -> f64 {
     let effects = Effects {
-        gravity: Some([0.0, GRAVITY]),
+        gravity: Some(Vec2::new(0.0, GRAVITY)),
         drag: Some(drag),
         ..Effects::default()
     };

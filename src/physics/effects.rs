@@ -2,6 +2,7 @@
 
 use super::ball::Ball;
 use super::floor::Floor;
+use super::vec2::Vec2;
 use super::walls::Walls;
 use super::work::{tally, Work};
 
@@ -9,7 +10,7 @@ use super::work::{tally, Work};
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Effects {
     /// Added to every velocity each frame, px/frame².
-    pub gravity: Option<[f64; 2]>,
+    pub gravity: Option<Vec2>,
     /// Share of speed lost to the air each frame (the lesson's `v *= 1 - drag`).
     pub drag: Option<f64>,
     /// The box, with its damping.
@@ -22,7 +23,7 @@ impl Effects {
     /// The lesson's collision response: clamp-then-reflect against the box, then against
     /// every floor (swept from `from`), then the box again in case a floor pushed the ball
     /// out. Box first, so a fast ball cannot slip round a floor's end through the wall.
-    pub fn clamp_and_reflect(&self, ball: &mut Ball, from: [f64; 2]) {
+    pub fn clamp_and_reflect(&self, ball: &mut Ball, from: Vec2) {
         self.bounce_off_walls(ball);
         if !self.floors.is_empty() {
             for floor in &self.floors {

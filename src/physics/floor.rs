@@ -9,15 +9,15 @@ use super::vec2::Vec2;
 /// A line segment from `from` to `to` (px) and the share of normal speed a bounce keeps.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Floor {
-    pub from: [f64; 2],
-    pub to: [f64; 2],
+    pub from: Vec2,
+    pub to: Vec2,
     pub damping: f64,
 }
 
 impl Floor {
     /// The end points `from` and `to`.
     pub fn ends(&self) -> [Vec2; 2] {
-        [Vec2::from(self.from), Vec2::from(self.to)]
+        [self.from, self.to]
     }
 
     /// The unit normal (left of `from → to`); which side a ball is on is the sign along it.
@@ -37,8 +37,7 @@ impl Floor {
     /// The unit normal from the segment towards `centre` and how far the centre is from the
     /// segment (its nearest point, which may be an end). A centre on the segment gets the
     /// face's normal. The contact solver builds its floor contacts from this.
-    pub fn nearest(&self, centre: [f64; 2]) -> ([f64; 2], f64) {
-        let centre = Vec2::from(centre);
+    pub fn nearest(&self, centre: Vec2) -> (Vec2, f64) {
         let t = self.along(centre).clamp(0.0, 1.0);
         let [from, to] = self.ends();
         let point = from + t * (to - from);
@@ -49,7 +48,7 @@ impl Floor {
         } else {
             self.normal()
         };
-        (normal.to_array(), distance)
+        (normal, distance)
     }
 
     /// Resolves contact for a ball that moved from centre `from` to its current centre this step.
@@ -57,9 +56,8 @@ impl Floor {
     /// Swept: if the ball's path crossed the segment's face (even moving many diameters per
     /// frame), it is put back on the side it came from. Otherwise a ball overlapping an end
     /// point bounces off it as off a point.
-    pub fn bounce(&self, ball: &mut Ball, from: [f64; 2]) {
-        let (from, now) = (Vec2::from(from), ball.position());
-        let (start, normal) = (Vec2::from(self.from), self.normal());
+    pub fn bounce(&self, ball: &mut Ball, from: Vec2) {
+        let (now, start, normal) = (ball.position(), self.from, self.normal());
         let before = (from - start).dot(normal);
         let after = (now - start).dot(normal);
         // The side the ball came from; distances below are measured towards that side.

@@ -72,7 +72,7 @@ impl Motion {
                 exact::step(self.integrator, ball, forces, effects);
             }
             CollisionMode::Clamp => {
-                let from = [ball.x, ball.y];
+                let from = ball.position();
                 self.integrator.step(ball, forces);
                 effects.clamp_and_reflect(ball, from);
             }

@@ -50,7 +50,7 @@ impl Stepper {
         }
         let gravity = match effects.gravity {
             None => Some(0.0),
-            Some([gx, gy]) => (gx == 0.0).then_some(gy),
+            Some(g) => (g.x == 0.0).then_some(g.y),
         };
         match (gravity, effects.walls) {
             (Some(gravity), Some(walls))

@@ -43,6 +43,12 @@ impl Vec2 {
         Vec2::new(-self.y, self.x)
     }
 
+    /// The component along `axis`: `x` for 0, `y` for 1, for code that works one axis at a
+    /// time.
+    pub fn axis(self, axis: usize) -> f64 {
+        self.to_array()[axis]
+    }
+
     /// As an array `[x, y]`, for code that indexes by axis.
     pub fn to_array(self) -> [f64; 2] {
         [self.x, self.y]
@@ -127,5 +133,6 @@ mod tests {
         assert_eq!(a.perp().dot(a), 0.0);
         assert_eq!(Vec2::new(3.0, 4.0).length(), 5.0);
         assert_eq!(Vec2::from([1.0, 2.0]).to_array(), [1.0, 2.0]);
+        assert_eq!((a.axis(0), a.axis(1)), (a.x, a.y));
     }
 }

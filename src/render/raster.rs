@@ -17,6 +17,7 @@ use super::palette::{
 };
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
+use crate::physics::vec2::Vec2;
 use crate::scene::spec::{Rgb, Scene};
 
 /// Draws a scene's balls with the scene's colours.
@@ -141,7 +142,8 @@ impl Renderer {
         frame.fill(self.background);
         let canvas = [f64::from(self.width), f64::from(self.height)];
         for floor in &self.floors {
-            if let Some((from, to)) = clip_segment(floor.from, floor.to, canvas) {
+            let [from, to] = floor.ends().map(Vec2::to_array);
+            if let Some((from, to)) = clip_segment(from, to, canvas) {
                 let point = |[x, y]: [f64; 2]| (x as f32, y as f32);
                 draw_line(frame, point(from), point(to), self.floor);
             }

@@ -11,6 +11,7 @@ use super::spec::{BallSpec, InvalidValue, Rgb, Scene, MAX_BALLS};
 use crate::physics::floor::Floor;
 use crate::physics::maths;
 use crate::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
+use crate::physics::vec2::Vec2;
 use crate::physics::Integrator;
 
 /// The bundled presets: name and TOML text, one per lesson exercise.
@@ -112,29 +113,6 @@ pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
                 name: name.to_string(),
             })?;
     parse(&format!("scenes/{name}.toml"), text, seed)
-}
-
-/// The `pile` preset with `count` balls of `radius` px spawned instead of its own: the
-/// contact study and its tests heap up different piles in the same box. They are placed
-/// uniformly at random, overlaps and all, as when the study was measured.
-pub fn pile(count: usize, radius: f64, seed: u64) -> Result<Scene, SceneFileError> {
-    let mut scene = preset("pile", seed)?;
-    let spawn = Spawn {
-        count,
-        radius,
-        max_speed: 4.0,
-        trail: 0,
-        colours: Vec::new(),
-        trail_colours: Vec::new(),
-    };
-    scene.balls = spawn.overlapping_balls(f64::from(scene.width), f64::from(scene.height), seed);
-    scene
-        .validate()
-        .map_err(|invalid| SceneFileError::Invalid {
-            file: "scenes/pile.toml".to_string(),
-            invalid,
-        })?;
-    Ok(scene)
 }
 
 /// Parses and validates scene-file text; `file` names it in errors.
@@ -321,10 +299,13 @@ struct BallFile {
 }
 
 /// `count` balls at random positions inside the box, moving in random directions at random
-/// speeds up to `max_speed`, coloured in turn from `colours` and `trail_colours`.
+/// speeds up to `max_speed`, coloured in turn from `colours` and `trail_colours`: a `[spawn]`
+/// table. Public, with [`Spawn::new`] and [`Spawn::overlapping_balls`], so the lab
+/// (`bouncing_ball_lab::scenes`) can heap up its own piles of balls spawned as scene files
+/// spawn them.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Spawn {
+pub struct Spawn {
     count: usize,
     radius: f64,
     max_speed: f64,
@@ -378,8 +359,8 @@ impl SceneFile {
                 .floors
                 .into_iter()
                 .map(|f| Floor {
-                    from: f.from,
-                    to: f.to,
+                    from: Vec2::from(f.from),
+                    to: Vec2::from(f.to),
                     damping: f.damping,
                 })
                 .collect(),
@@ -399,6 +380,19 @@ impl SceneFile {
 }
 
 impl Spawn {
+    /// `count` balls of `radius` px at speeds up to `max_speed` px/frame, with no trails and
+    /// the default colours.
+    pub fn new(count: usize, radius: f64, max_speed: f64) -> Spawn {
+        Spawn {
+            count,
+            radius,
+            max_speed,
+            trail: 0,
+            colours: Vec::new(),
+            trail_colours: Vec::new(),
+        }
+    }
+
     /// The balls, spread over the box so that they never overlap when they fit side by side:
     /// the box is cut into equal square slots (the largest that give one per ball), the balls
     /// go into slots picked at random, each at a random spot inside its slot. A slot narrower
@@ -434,9 +428,10 @@ impl Spawn {
     }
 
     /// The balls at uniformly random spots, overlapping where chance puts them: for balls
-    /// that pass through each other, and for the contact study's piles (`pile`), whose
-    /// measured figures (`docs/contacts.md`) are for these.
-    fn overlapping_balls(&self, width: f64, height: f64, seed: u64) -> Vec<BallSpec> {
+    /// that pass through each other, and for the contact study's piles
+    /// (`bouncing_ball_lab::scenes::pile`), whose measured figures (`docs/contacts.md`) are
+    /// for these.
+    pub fn overlapping_balls(&self, width: f64, height: f64, seed: u64) -> Vec<BallSpec> {
         let mut random = Random::new(seed);
         let r = self.radius;
         (0..self.count)

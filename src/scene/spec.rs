@@ -11,6 +11,7 @@ use crate::physics::effects::Effects;
 use crate::physics::floor::Floor;
 use crate::physics::motion::Motion;
 use crate::physics::simulation::Simulation;
+use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
 
 /// A colour as red, green, blue.
@@ -158,7 +159,7 @@ impl Scene {
     /// The forces and boundaries the scene names.
     pub fn effects(&self) -> Effects {
         Effects {
-            gravity: self.gravity,
+            gravity: self.gravity.map(Vec2::from),
             drag: self.drag,
             walls: self.walls.map(|damping| Walls {
                 width: f64::from(self.width),
@@ -195,14 +196,14 @@ impl Scene {
         }
         for (i, floor) in self.floors.iter().enumerate() {
             let key = |name: &str| format!("floors[{i}].{name}");
-            for (name, [x, y]) in [("from", floor.from), ("to", floor.to)] {
+            for (name, Vec2 { x, y }) in [("from", floor.from), ("to", floor.to)] {
                 check_finite(&key(name), x)?;
                 check_finite(&key(name), y)?;
             }
             if floor.from == floor.to {
                 return Err(invalid(
                     &key("to"),
-                    format!("{:?}", floor.to),
+                    format!("{:?}", floor.to.to_array()),
                     "must differ from `from`",
                 ));
             }

@@ -165,7 +165,7 @@ impl Stepping<'_> {
 
 /// The strength of the scene's gravity, px/frame² (0 without).
 fn gravity(effects: &Effects) -> f64 {
-    effects.gravity.map_or(0.0, |g| Vec2::from(g).length())
+    effects.gravity.map_or(0.0, |g| g.length())
 }
 
 /// What decides, as contacts are found, whether one can touch within the step.
@@ -503,8 +503,7 @@ impl Scratch {
             }
             for (k, floor) in effects.floors.iter().enumerate() {
                 tally(Work::Floor);
-                let (normal, distance) = floor.nearest(centre.to_array());
-                let normal = Vec2::from(normal);
+                let (normal, distance) = floor.nearest(centre);
                 touch(
                     4 + k as u64,
                     normal,

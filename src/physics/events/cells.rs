@@ -18,6 +18,7 @@ use super::lists::Lists;
 use crate::physics::ball::Ball;
 use crate::physics::integrate::poly::Poly;
 use crate::physics::tolerances::MAX_CELLS_PER_BALL;
+use crate::physics::vec2::Vec2;
 
 /// Balls in cells, rebuilt at the start of every step into the same buffers.
 #[derive(Clone, Debug, Default)]
@@ -35,17 +36,18 @@ pub struct Cells {
 }
 
 impl Cells {
-    /// Lays a grid over the balls as they are now and over `area` (the box, if there is
-    /// one: the balls will spread over it), and puts each ball in its cell.
-    pub fn rebuild(&mut self, balls: &[Ball], area: Option<[f64; 2]>) {
+    /// Lays a grid over the balls as they are now and over `area` (the box from the origin to
+    /// this corner, if there is one: the balls will spread over it), and puts each ball in its
+    /// cell.
+    pub fn rebuild(&mut self, balls: &[Ball], area: Option<Vec2>) {
         let (mut left, mut top, mut right, mut bottom) = (0.0, 0.0, 0.0, 0.0);
         let mut largest = 0.0f64;
         if let Some(first) = balls.first() {
             (left, top, right, bottom) = (first.x, first.y, first.x, first.y);
         }
-        if let Some([width, height]) = area.filter(|_| !balls.is_empty()) {
+        if let Some(corner) = area.filter(|_| !balls.is_empty()) {
             (left, top) = (left.min(0.0), top.min(0.0));
-            (right, bottom) = (right.max(width), bottom.max(height));
+            (right, bottom) = (right.max(corner.x), bottom.max(corner.y));
         }
         for ball in balls {
             left = f64::min(left, ball.x);

@@ -269,7 +269,7 @@ impl EventDriven {
             // Euler's first kick gave gravity for the whole step: take back the dropped part,
             // so a capped step cannot speed balls up without moving them.
             if let (Integrator::SemiImplicitEuler, Some(g)) = (step.integrator, flight.gravity) {
-                let velocity = ball.velocity() - Vec2::from(g) * unused;
+                let velocity = ball.velocity() - g * unused;
                 (ball.vx, ball.vy) = (velocity.x, velocity.y);
             }
         }
@@ -292,7 +292,11 @@ impl EventDriven {
         for ball in balls.iter_mut() {
             exact::put_back(ball, step.effects);
         }
-        let area = step.effects.walls.as_ref().map(|w| [w.width, w.height]);
+        let area = step
+            .effects
+            .walls
+            .as_ref()
+            .map(|w| Vec2::new(w.width, w.height));
         self.cells.rebuild(balls, area);
         self.queue.reset(balls.len(), step.forces.dt);
         self.clock.clear();
@@ -350,7 +354,6 @@ impl EventDriven {
         let Some(g) = forces.gravity else {
             return;
         };
-        let g = Vec2::from(g);
         let sleep_speed = g.length() * forces.dt;
         let slow = |ball: &Ball| ball.velocity().length() <= sleep_speed;
         let mut candidates: Vec<usize> = (0..balls.len()).filter(|&i| slow(&balls[i])).collect();

@@ -69,7 +69,7 @@ impl Side {
 
     /// The component of `v` along the wall's axis.
     fn component(&self, v: Vec2) -> f64 {
-        v.to_array()[self.axis]
+        v.axis(self.axis)
     }
 
     fn distance(&self, ball: &Ball) -> f64 {
@@ -113,7 +113,7 @@ pub fn rests(rebound: f64, damping: f64, forces: &Forces, n: Vec2) -> bool {
 
 /// Whether gravity pushes a ball into a surface whose unit normal (pointing at the ball) is `n`.
 pub fn pressed(forces: &Forces, n: Vec2) -> bool {
-    forces.gravity.is_some_and(|g| Vec2::from(g).dot(n) < 0.0)
+    forces.gravity.is_some_and(|g| g.dot(n) < 0.0)
 }
 
 /// Something fixed a ball can touch.
@@ -224,11 +224,11 @@ impl Support {
             return held;
         };
         if self.len > Self::MAX {
-            *gravity = [0.0; 2];
+            *gravity = Vec2::ZERO;
             return held;
         }
         let normals = &self.normals[..self.len];
-        let mut g = Vec2::from(*gravity);
+        let mut g = *gravity;
         for &n in normals {
             let push = g.dot(n);
             if push < 0.0 {
@@ -238,7 +238,7 @@ impl Support {
         if normals.iter().any(|&n| g.dot(n) < -TOUCH_SPEED) {
             g = Vec2::ZERO;
         }
-        *gravity = g.to_array();
+        *gravity = g;
         held
     }
 }
@@ -347,7 +347,7 @@ impl<'a> Bounds<'a> {
     ) -> Option<(f64, Contact)> {
         // How far the flight can carry the centre along each axis: walls and floors further
         // away are skipped without looking for roots.
-        let reach = path.map(|p| p.reach(left));
+        let reach = Vec2::from(path.map(|p| p.reach(left)));
         let mut first: Option<(f64, Contact)> = None;
         let mut keep_earliest = |found: Option<(f64, Contact)>| {
             if let Some((time, contact)) = found {
@@ -358,7 +358,7 @@ impl<'a> Bounds<'a> {
         };
         // Plain loops rather than an iterator chain: this runs after every event.
         for side in self.sides.iter().flatten() {
-            if reach[side.axis] < side.distance(ball) {
+            if reach.axis(side.axis) < side.distance(ball) {
                 continue;
             }
             let gap = path[side.axis] * -side.outward + side.outward * side.contact;
@@ -408,12 +408,12 @@ fn floor_contact(
     ball: &Ball,
     path: &[Poly; 2],
     left: f64,
-    reach: [f64; 2],
+    reach: Vec2,
 ) -> Option<(f64, Contact)> {
     let r = ball.radius;
     let distance = line_distance(floor, path);
     let now = distance.at(0.0);
-    if now.abs() - r > reach[0] + reach[1] {
+    if now.abs() - r > reach.x + reach.y {
         return None; // the line, so the whole segment, is out of reach this step
     }
     let side = if now < 0.0 { -1.0 } else { 1.0 };
@@ -462,10 +462,9 @@ mod tests {
     /// Gravity as in the lesson, straight down.
     const G: Vec2 = Vec2::new(0.0, 0.5);
 
-    fn support(normals: &[[f64; 2]]) -> Support {
+    fn support(normals: &[Vec2]) -> Support {
         let mut support = Support::default();
         for &n in normals {
-            let n = Vec2::from(n);
             support.push(n / n.length());
         }
         support
@@ -474,13 +473,17 @@ mod tests {
     #[test]
     fn a_ball_is_held_completely_only_where_pushes_along_the_normals_can_balance_gravity() {
         // Resting a little right of the top of the ball below, it slides off to the right...
-        let below = [0.01, -1.0];
+        let below = Vec2::new(0.01, -1.0);
         // ...unless a ball on that side, even one a little higher, stops it.
-        let higher_on_the_right = [-0.93, 0.37];
-        let higher_on_the_left = [0.93, 0.37];
+        let higher_on_the_right = Vec2::new(-0.93, 0.37);
+        let higher_on_the_left = Vec2::new(0.93, 0.37);
         let cases = [
-            ("on a flat floor", vec![[0.0, -1.0]], true),
-            ("between two walls", vec![[1.0, 0.0], [-1.0, 0.0]], false),
+            ("on a flat floor", vec![Vec2::new(0.0, -1.0)], true),
+            (
+                "between two walls",
+                vec![Vec2::new(1.0, 0.0), Vec2::new(-1.0, 0.0)],
+                false,
+            ),
             ("just off the top of a ball", vec![below], false),
             (
                 "off the top, stopped on the side it slides to",

@@ -14,6 +14,7 @@ use super::poly::Poly;
 use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
 use crate::physics::maths;
+use crate::physics::vec2::Vec2;
 use crate::physics::work::{tally, Work};
 
 /// What the integrators move: a centre and a velocity. A [`Ball`] is one; the contact solver
@@ -50,7 +51,7 @@ pub struct Forces {
     /// Step length, frames.
     pub dt: f64,
     /// px/frame²; `None` costs nothing.
-    pub gravity: Option<[f64; 2]>,
+    pub gravity: Option<Vec2>,
     /// `None` costs nothing.
     pub drag: Option<Drag>,
 }
@@ -106,7 +107,7 @@ impl Forces {
 
     /// Acceleration along one axis at velocity `v`: gravity minus drag.
     fn accel(&self, axis: usize, v: f64) -> f64 {
-        let g = self.gravity.map_or(0.0, |g| g[axis]);
+        let g = self.gravity.map_or(0.0, |g| g.axis(axis));
         match self.drag {
             Some(drag) => g - drag.rate * v,
             None => g,
@@ -218,9 +219,9 @@ impl Integrator {
 fn kick(ball: &mut impl Movable, forces: &Forces) {
     forces.tally();
     let [_, _, vx, vy] = ball.motion();
-    if let Some([gx, gy]) = forces.gravity {
-        *vx += gx * forces.dt;
-        *vy += gy * forces.dt;
+    if let Some(g) = forces.gravity {
+        *vx += g.x * forces.dt;
+        *vy += g.y * forces.dt;
     }
     if let Some(drag) = forces.drag {
         *vx *= drag.keep;
@@ -232,7 +233,7 @@ fn kick(ball: &mut impl Movable, forces: &Forces) {
 /// half-kick `v₁ = v½ + (g − λ·v₁)·h/2` is solved for `v₁` (it is linear: one division).
 fn verlet(x: f64, v: f64, h: f64, axis: usize, forces: &Forces) -> (f64, f64) {
     let half = v + forces.accel(axis, v) * h / 2.0;
-    let g = forces.gravity.map_or(0.0, |g| g[axis]);
+    let g = forces.gravity.map_or(0.0, |g| g.axis(axis));
     let v1 = match forces.drag {
         Some(drag) => (half + g * h / 2.0) / (1.0 + drag.rate * h / 2.0),
         None => half + g * h / 2.0,
