@@ -232,9 +232,9 @@ fn refuse(error: clap::Error) -> ExitCode {
 
 /// A value the scene cannot take, named as the user knows it: the flag they typed, or the
 /// scene's own value that what they typed no longer fits (`--radius 60` with the default x).
-fn refuse_value(bad: &InvalidValue, settings: &Overrides) -> String {
+fn refuse_value(bad: &InvalidValue, typed: impl Fn(&str) -> bool) -> String {
     let name = bad.key.rsplit('.').next().unwrap_or(&bad.key);
-    if settings.is_typed(name) {
+    if typed(name) {
         return format!(
             "{} {} is not allowed: {}",
             flag(&bad.key),
@@ -315,7 +315,11 @@ fn main() -> ExitCode {
         Err(error) => {
             match &error {
                 RunError::Invalid(bad) => {
-                    eprintln!("error: {}", refuse_value(bad, &args.settings))
+                    let typed = |name: &str| match name {
+                        "plot" => args.plot.is_some(),
+                        setting => args.settings.is_typed(setting),
+                    };
+                    eprintln!("error: {}", refuse_value(bad, typed))
                 }
                 other => eprintln!("error: {other}"),
             }
