@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
+use bouncing_ball::scene::file::Canvas;
 use bouncing_ball::scene::{self, preset_names, InvalidValue, Overrides, SceneFileError};
 use bouncing_ball::stop::Stop;
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene, Summary};
@@ -135,9 +136,14 @@ fn lesson_scene() -> Scene {
 impl Args {
     /// The scene to run: a file, a preset or the lesson's, with the typed flags laid over it.
     fn scene(&self) -> Result<Scene, SceneFileError> {
+        // A typed canvas size is there before any ball is spawned, so spawned balls fill it.
+        let canvas = Canvas {
+            width: self.settings.width,
+            height: self.settings.height,
+        };
         let mut scene = match (&self.scene, &self.preset) {
-            (Some(path), _) => scene::file::load(path, self.seed)?,
-            (None, Some(name)) => scene::file::preset(name, self.seed)?,
+            (Some(path), _) => scene::file::load_on(path, self.seed, canvas)?,
+            (None, Some(name)) => scene::file::preset_on(name, self.seed, canvas)?,
             (None, None) => lesson_scene(),
         };
         self.settings.apply(&mut scene);

@@ -236,6 +236,29 @@ fn bad_input_gets_one_line_naming_the_flag_exit_2_and_no_file() {
 }
 
 #[test]
+fn spawned_balls_fill_the_canvas_the_flags_give() {
+    let dir = temp_dir();
+    let args = [
+        "--preset", "many", "--width", "1920", "--height", "1080", "-n", "1",
+    ];
+    let output = run_in(
+        dir.path(),
+        &[&args[..], &["--trace", "t.csv", "-q"]].concat(),
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    let trace = std::fs::read_to_string(dir.path().join("t.csv")).unwrap();
+    let rows = trace.split_once('\n').map_or("", |(_header, rows)| rows);
+    let at = states(rows, 2, ',');
+    let right = at.iter().filter(|s| s[0] > 960.0).count();
+    let low = at.iter().filter(|s| s[1] > 540.0).count();
+    assert_eq!(at.len(), 50);
+    assert!(
+        right >= 10 && low >= 10,
+        "{right} balls in the right half, {low} in the lower half of 1920x1080"
+    );
+}
+
+#[test]
 fn the_summary_names_every_file_written() {
     let dir = temp_dir();
     let args = [

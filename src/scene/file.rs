@@ -60,9 +60,22 @@ pub fn preset_names() -> Vec<&'static str> {
     PRESETS.iter().map(|(name, _)| *name).collect()
 }
 
+/// A canvas size typed on the command line (`--width 1920`), laid over a scene file's own
+/// before its `[spawn]` places balls, so they fill the canvas the run draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Canvas {
+    pub width: Option<u32>,
+    pub height: Option<u32>,
+}
+
 /// Reads a scene file (`-`: standard input); `seed` drives any random spawning it asks for.
 /// Only a regular file or standard input, and at most [`MAX_SCENE_BYTES`] of it.
 pub fn load(path: &Path, seed: u64) -> Result<Scene, SceneFileError> {
+    load_on(path, seed, Canvas::default())
+}
+
+/// [`load`], with the balls spawned on `canvas` where it gives a size.
+pub fn load_on(path: &Path, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
     let stdin = path.as_os_str() == "-";
     let file = if stdin {
         "standard input".to_string()
@@ -100,11 +113,17 @@ pub fn load(path: &Path, seed: u64) -> Result<Scene, SceneFileError> {
     let text = String::from_utf8(bytes).map_err(|_| read_error("not UTF-8 text".to_string()))?;
     // Windows editors (Notepad among them) may begin UTF-8 with a byte-order mark; TOML has
     // no place for one. Line endings need nothing: TOML takes CRLF as it takes LF.
-    parse(&file, text.strip_prefix('\u{feff}').unwrap_or(&text), seed)
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    parse_on(&file, text, seed, canvas)
 }
 
 /// Loads a bundled preset by name.
 pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
+    preset_on(name, seed, Canvas::default())
+}
+
+/// [`preset`], with the balls spawned on `canvas` where it gives a size.
+pub fn preset_on(name: &str, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
     let (_, text) =
         PRESETS
             .iter()
@@ -112,11 +131,16 @@ pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
             .ok_or_else(|| SceneFileError::UnknownPreset {
                 name: name.to_string(),
             })?;
-    parse(&format!("scenes/{name}.toml"), text, seed)
+    parse_on(&format!("scenes/{name}.toml"), text, seed, canvas)
 }
 
 /// Parses and validates scene-file text; `file` names it in errors.
 pub fn parse(file: &str, text: &str, seed: u64) -> Result<Scene, SceneFileError> {
+    parse_on(file, text, seed, Canvas::default())
+}
+
+/// [`parse`], with the balls spawned on `canvas` where it gives a size.
+fn parse_on(file: &str, text: &str, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
     let parse_error = |key: String, error: toml::de::Error| {
         let span = error.span().unwrap_or(0..0);
         let start = span.start.min(text.len());
@@ -142,7 +166,7 @@ pub fn parse(file: &str, text: &str, seed: u64) -> Result<Scene, SceneFileError>
         file: file.to_string(),
         invalid,
     };
-    let scene = raw.into_scene(seed).map_err(invalid)?;
+    let scene = raw.on(canvas).into_scene(seed).map_err(invalid)?;
     scene.validate().map_err(invalid)?;
     Ok(scene)
 }
@@ -316,6 +340,15 @@ pub struct Spawn {
 }
 
 impl SceneFile {
+    /// The file with `canvas`'s size in place of its own, where `canvas` gives one.
+    fn on(self, canvas: Canvas) -> SceneFile {
+        SceneFile {
+            width: canvas.width.unwrap_or(self.width),
+            height: canvas.height.unwrap_or(self.height),
+            ..self
+        }
+    }
+
     fn into_scene(self, seed: u64) -> Result<Scene, InvalidValue> {
         let mut balls: Vec<BallSpec> = self
             .balls
