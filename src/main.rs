@@ -7,7 +7,9 @@ use std::process::ExitCode;
 
 use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
 use bouncing_ball::scene::file::Canvas;
-use bouncing_ball::scene::{self, preset_names, InvalidValue, Overrides, SceneFileError};
+use bouncing_ball::scene::{
+    self, preset_names, InvalidValue, Overrides, SceneFileError, TrailFade,
+};
 use bouncing_ball::stop::Stop;
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene, Summary};
 use clap::{ArgAction, CommandFactory, FromArgMatches, Parser, Subcommand};
@@ -36,6 +38,11 @@ const BOUNCE_DAMPING: f64 = 0.88;
 // --- Animation ---
 /// How many past positions the trail shows, points.
 const TRAIL_LEN: usize = 20;
+/// How trail dots darken into the past: `Linear` (share (i+1)/n of the colour), `None`, or
+/// `Power(p)` (that share to the power p).
+const TRAIL_FADE: TrailFade = TrailFade::Linear;
+/// Whether trail dots shrink into the past along with their fade.
+const TRAIL_SHRINK: bool = true;
 /// How many frames to simulate, frames.
 const FRAMES: u32 = 200;
 /// How long each frame shows, ms (GIF counts hundredths, so a multiple of 10).
@@ -129,6 +136,8 @@ fn lesson_scene() -> Scene {
         walls: Some(BOUNCE_DAMPING),
         frames: FRAMES,
         frame_ms: FRAME_MS,
+        trail_fade: TRAIL_FADE,
+        trail_shrink: TRAIL_SHRINK,
         ..Scene::empty(WIDTH, HEIGHT)
     }
 }

@@ -5,10 +5,12 @@ mod common;
 
 use bouncing_ball::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
 use bouncing_ball::physics::work::{self, Work};
+use bouncing_ball::physics::Ball;
 use bouncing_ball::render::palette::{shade, MAX_COLOURS};
 use bouncing_ball::render::Renderer;
 use bouncing_ball::scene::file::{self as scene_file, SceneFileError, PRESETS};
 use bouncing_ball::scene::overrides::Overrides;
+use bouncing_ball::scene::TrailFade;
 use bouncing_ball::{BallSpec, Scene};
 use common::lesson_scene;
 
@@ -442,4 +444,72 @@ fn a_scene_file_saved_by_a_windows_editor_with_crlf_and_a_byte_order_mark_reads_
             "preset {name} with CRLF and a BOM"
         );
     }
+}
+
+#[test]
+fn the_trail_fade_sets_the_shades_and_a_trail_that_does_not_fade_uses_one() {
+    let with = |fade| Scene {
+        trail_fade: fade,
+        ..lesson_scene()
+    };
+    let trail = lesson_scene().balls[0].trail_colour;
+    let none = Renderer::new(&with(TrailFade::None)).unwrap();
+    let shades: Vec<_> = none
+        .palette()
+        .colours()
+        .iter()
+        .filter(|&&c| c != [0, 0, 0])
+        .collect();
+    assert_eq!(
+        shades.len(),
+        2,
+        "the ball's colour and the one trail colour: {shades:?}"
+    );
+    assert!(shades.contains(&&trail), "{shades:?}");
+    // A power darkens each dot to (share)^p of the colour: the oldest dot of a full trail of
+    // 20 at power 2 is (1/20)² of it.
+    let squared = Renderer::new(&with(TrailFade::Power(2.0))).unwrap();
+    let oldest = shade(trail, (1.0f64 / 20.0).powi(2));
+    assert!(
+        squared.palette().colours().contains(&oldest),
+        "missing {oldest:?}"
+    );
+    assert!(!squared
+        .palette()
+        .colours()
+        .contains(&shade(trail, 1.0 / 20.0)));
+}
+
+#[test]
+fn a_trail_that_does_not_shrink_draws_its_dots_at_the_balls_radius() {
+    let drawn_trail_pixels = |shrink: bool| {
+        let scene = Scene {
+            trail_fade: TrailFade::None,
+            trail_shrink: shrink,
+            ..lesson_scene()
+        };
+        let renderer = Renderer::new(&scene).unwrap();
+        // Two trail points far apart: the older is drawn (at half the radius if it shrinks),
+        // the newer lies under the ball.
+        let mut ball = Ball::new(200.0, 120.0, 0.0, 0.0, 12.0, 2);
+        ball.trail.push(60.0, 120.0);
+        ball.trail.push(200.0, 120.0);
+        let mut frame = renderer.new_frame();
+        renderer.draw(&[ball], &mut frame);
+        let trail = scene.balls[0].trail_colour;
+        frame
+            .pixels()
+            .filter(|p| renderer.palette().rgb(p.0[0]) == trail)
+            .count()
+    };
+    let (full, shrunk) = (drawn_trail_pixels(false), drawn_trail_pixels(true));
+    // π·12² ≈ 452 px against π·6² ≈ 113 px.
+    assert!(
+        (400..=500).contains(&full),
+        "a dot at the ball's radius: {full} px"
+    );
+    assert!(
+        (90..=140).contains(&shrunk),
+        "a dot at half the radius: {shrunk} px"
+    );
 }

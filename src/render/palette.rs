@@ -15,7 +15,8 @@ use std::collections::HashMap;
 use std::fmt;
 use std::ops::Range;
 
-use crate::scene::spec::Rgb;
+use crate::physics::maths;
+use crate::scene::spec::{Rgb, TrailFade};
 
 /// A frame as indices into the palette, one byte per pixel.
 pub type IndexedFrame = image::GrayImage;
@@ -172,6 +173,33 @@ pub fn fade(i: usize, n: usize) -> f64 {
     (i + 1) as f64 / n as f64
 }
 
+/// How a scene's trails look: how their dots darken and whether they shrink into the past.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrailLook {
+    pub fade: TrailFade,
+    pub shrink: bool,
+}
+
+impl TrailLook {
+    /// The share of the trail colour dot `i` of a trail of `n` is drawn in.
+    pub fn colour_share(&self, i: usize, n: usize) -> f64 {
+        match self.fade {
+            TrailFade::Linear => fade(i, n),
+            TrailFade::None => 1.0,
+            TrailFade::Power(p) => maths::powf(fade(i, n), p),
+        }
+    }
+
+    /// The share of the ball's radius dot `i` of a trail of `n` is drawn at.
+    pub fn size_share(&self, i: usize, n: usize) -> f64 {
+        if self.shrink {
+            fade(i, n)
+        } else {
+            1.0
+        }
+    }
+}
+
 /// The dots drawn of a trail of `n`: all but the newest. The newest is where the ball is now,
 /// at fade 1, so the same circle as the ball, which is drawn over it: its shade is never seen.
 pub fn drawn_dots(n: usize) -> Range<usize> {
@@ -194,13 +222,17 @@ pub fn quantised_fade(fade: f64, levels: usize) -> f64 {
 pub fn fade_levels(
     solid: &[Rgb],
     trails: &[(Rgb, usize)],
+    look: TrailLook,
 ) -> Result<Option<usize>, TooManyColours> {
     let mut exact = Palette::new();
     let mut fits = solid.iter().all(|&c| exact.insert(c).is_some());
     for &(colour, len) in trails {
         for n in 1..=len {
             for i in drawn_dots(n) {
-                fits = fits && exact.insert(shade(colour, fade(i, n))).is_some();
+                fits = fits
+                    && exact
+                        .insert(shade(colour, look.colour_share(i, n)))
+                        .is_some();
             }
         }
     }

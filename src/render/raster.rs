@@ -12,8 +12,8 @@ use image::{GrayImage, Luma};
 use super::ellipse::fill_circle;
 use super::line::draw_line;
 use super::palette::{
-    drawn_dots, fade, fade_levels, quantised_fade, shade, Colours, IndexedFrame, Palette,
-    TooManyColours,
+    drawn_dots, fade_levels, quantised_fade, shade, Colours, IndexedFrame, Palette, TooManyColours,
+    TrailLook,
 };
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
@@ -30,6 +30,7 @@ pub struct Renderer {
     floors: Vec<Floor>,
     floor: u8,
     styles: Vec<BallStyle>,
+    look: TrailLook,
 }
 
 /// The palette indices one ball is drawn with.
@@ -73,7 +74,11 @@ impl Renderer {
             .collect();
         let (mut tables, table_of_ball) = shade_tables(scene);
         let trails: Vec<(Rgb, usize)> = tables.iter().map(|t| (t.colour, t.longest)).collect();
-        let levels = fade_levels(&solid, &trails)?;
+        let look = TrailLook {
+            fade: scene.trail_fade,
+            shrink: scene.trail_shrink,
+        };
+        let levels = fade_levels(&solid, &trails, look)?;
 
         // Solid colours first, then every shade.
         let mut palette = GrowingPalette {
@@ -90,7 +95,7 @@ impl Renderer {
             .iter()
             .map(|spec| palette.insert(spec.colour))
             .collect::<Result<Vec<u8>, _>>()?;
-        insert_shades(&mut tables, levels, &mut palette)?;
+        insert_shades(&mut tables, levels, look, &mut palette)?;
         let mut palette = palette.palette;
 
         // Renumbered so that the colours drawn together sit together (see `stages`).
@@ -122,6 +127,7 @@ impl Renderer {
             floors: scene.floors.clone(),
             floor: renumber(floor),
             styles,
+            look,
         })
     }
 
@@ -151,7 +157,7 @@ impl Renderer {
         for (ball, style) in balls.iter().zip(&self.styles) {
             let n = ball.trail.len();
             for (i, &(x, y)) in ball.trail.iter().enumerate().take(drawn_dots(n).end) {
-                let radius = ball.radius * fade(i, n);
+                let radius = ball.radius * self.look.size_share(i, n);
                 fill_circle(frame, x, y, radius, style.trail_shade(i, n));
             }
         }
@@ -218,6 +224,7 @@ fn kinds(scene: &Scene, table_of_ball: &[usize]) -> Vec<(usize, usize)> {
 fn insert_shades(
     tables: &mut [ShadeTable],
     levels: Option<usize>,
+    look: TrailLook,
     palette: &mut GrowingPalette,
 ) -> Result<(), TooManyColours> {
     // Shades of full-length trails first, brightest (newest, biggest dot) first: `reorder`
@@ -227,7 +234,8 @@ fn insert_shades(
     for n in (1..=longest).rev() {
         for table in tables.iter_mut().filter(|t| n <= t.longest) {
             for i in drawn_dots(n).rev() {
-                let f = levels.map_or(fade(i, n), |l| quantised_fade(fade(i, n), l));
+                let share = look.colour_share(i, n);
+                let f = levels.map_or(share, |l| quantised_fade(share, l));
                 table.shades[slot(i, n)] = palette.insert(shade(table.colour, f))?;
             }
         }
@@ -309,6 +317,7 @@ pub fn to_rgb(frame: &IndexedFrame, palette: &Palette) -> image::RgbImage {
 
 #[cfg(test)]
 mod tests {
+    use super::super::palette::fade;
     use super::*;
     use crate::scene::spec::BallSpec;
 

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 
 use super::random::Random;
-use super::spec::{BallSpec, InvalidValue, Rgb, Scene, MAX_BALLS};
+use super::spec::{BallSpec, InvalidValue, Rgb, Scene, TrailFade, MAX_BALLS};
 use crate::physics::floor::Floor;
 use crate::physics::maths;
 use crate::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
@@ -254,6 +254,31 @@ struct SceneFile {
     spawn: Option<Spawn>,
     /// Where to draw the plot of the run, relative to the current folder (as `--plot` is).
     plot: Option<PathBuf>,
+    trail_fade: Option<FadeFile>,
+    #[serde(default = "default_trail_shrink")]
+    trail_shrink: bool,
+}
+
+/// How a file spells a trail fade: `"linear"`, `"none"`, or a power (`2.0`, or `"2"`).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum FadeFile {
+    Name(String),
+    Power(f64),
+}
+
+impl FadeFile {
+    fn read(self) -> Result<TrailFade, InvalidValue> {
+        let text = match self {
+            FadeFile::Name(name) => name,
+            FadeFile::Power(power) => power.to_string(),
+        };
+        text.parse().map_err(|allowed| InvalidValue {
+            key: "trail_fade".to_string(),
+            value: text,
+            allowed,
+        })
+    }
 }
 
 fn default_frames() -> u32 {
@@ -264,6 +289,9 @@ fn default_frame_ms() -> u32 {
 }
 fn default_floor_colour() -> Rgb {
     [200, 200, 200]
+}
+fn default_trail_shrink() -> bool {
+    true
 }
 fn default_substeps() -> u32 {
     1
@@ -408,6 +436,10 @@ impl SceneFile {
             frames: self.frames,
             frame_ms: self.frame_ms,
             plot: self.plot,
+            trail_fade: self
+                .trail_fade
+                .map_or(Ok(TrailFade::Linear), FadeFile::read)?,
+            trail_shrink: self.trail_shrink,
         })
     }
 }

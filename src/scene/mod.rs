@@ -17,4 +17,4 @@ pub mod spec;
 pub use file::{preset_names, SceneFileError, PRESETS};
 pub use names::Named;
 pub use overrides::Overrides;
-pub use spec::{BallSpec, InvalidValue, Rgb, Scene};
+pub use spec::{BallSpec, InvalidValue, Rgb, Scene, TrailFade};

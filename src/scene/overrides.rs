@@ -13,7 +13,7 @@ use clap::parser::ValueSource;
 use clap::{Arg, ArgAction, ArgMatches, Command};
 
 use super::spec::{
-    Scene, MAX_CANVAS_SIDE, MAX_FRAME_MS, MAX_ITERATIONS, MAX_SUBSTEPS, MAX_TRAIL_LEN,
+    Scene, TrailFade, MAX_CANVAS_SIDE, MAX_FRAME_MS, MAX_ITERATIONS, MAX_SUBSTEPS, MAX_TRAIL_LEN,
 };
 use crate::physics::{CollisionMode, Integrator};
 
@@ -260,6 +260,10 @@ settings! {
     iterations: u32 [1..=i64::from(MAX_ITERATIONS)] = scene.motion.iterations;
     /// Trail length, points (0: no trail)
     trail: usize [0..=MAX_TRAIL_LEN as i64] = ball.trail;
+    /// How trail dots darken into the past: linear (the lesson's), none, or a power (2: sooner)
+    trail_fade: TrailFade = scene.trail_fade;
+    /// Whether trail dots shrink into the past (the lesson's: true)
+    trail_shrink: bool = scene.trail_shrink;
     /// Frames to simulate
     -'n' frames: u32 [1..=i64::from(u32::MAX)] = scene.frames;
     /// Time each frame shows, ms (a multiple of 10)

@@ -59,6 +59,55 @@ pub struct Scene {
     pub frame_ms: u32,
     /// Where a scene file asks for a plot of the run (`plot = "run.svg"`); `--plot` overrides it.
     pub plot: Option<PathBuf>,
+    /// How trail dots darken into the past (the lesson's: linearly).
+    pub trail_fade: TrailFade,
+    /// Whether trail dots shrink into the past (the lesson's: yes, as they fade).
+    pub trail_shrink: bool,
+}
+
+/// How a trail's dots darken into the past. With the trail's length and whether its dots
+/// shrink, this is what the lesson calls the difference between a comet tail and a fairy-dust
+/// shimmer. Dot `i` of `n` (0 the oldest) has the lesson's share `(i + 1) / n` of the colour,
+/// or all of it, or that share to a power.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TrailFade {
+    /// The lesson's: the share itself.
+    Linear,
+    /// No fading: every dot in the full trail colour.
+    None,
+    /// The share to this power: above 1 the tail darkens sooner, below 1 it glows longer.
+    Power(f64),
+}
+
+/// The most a trail fade's power may be: beyond it every dot but the newest is black.
+pub const MAX_FADE_POWER: f64 = 20.0;
+
+impl fmt::Display for TrailFade {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            TrailFade::Linear => write!(f, "linear"),
+            TrailFade::None => write!(f, "none"),
+            TrailFade::Power(p) => write!(f, "{p}"),
+        }
+    }
+}
+
+impl std::str::FromStr for TrailFade {
+    type Err = String;
+
+    /// `linear`, `none`, or a power from above 0 to [`MAX_FADE_POWER`] (`2`, `0.5`).
+    fn from_str(text: &str) -> Result<TrailFade, String> {
+        match text.trim() {
+            "linear" => Ok(TrailFade::Linear),
+            "none" => Ok(TrailFade::None),
+            number => match number.parse::<f64>() {
+                Ok(p) if p > 0.0 && p <= MAX_FADE_POWER => Ok(TrailFade::Power(p)),
+                _ => Err(format!(
+                    "must be linear, none, or a power above 0 up to {MAX_FADE_POWER} (e.g. 2)"
+                )),
+            },
+        }
+    }
 }
 
 /// One ball as the scene starts it.
@@ -143,6 +192,8 @@ impl Scene {
             frames: 1,
             frame_ms: 30,
             plot: None,
+            trail_fade: TrailFade::Linear,
+            trail_shrink: true,
         }
     }
 
@@ -232,6 +283,15 @@ impl Scene {
                 self.frame_ms,
                 format!("must be a multiple of 10 up to {MAX_FRAME_MS} (GIF counts hundredths of a second)"),
             ));
+        }
+        if let TrailFade::Power(p) = self.trail_fade {
+            if !(p > 0.0 && p <= MAX_FADE_POWER) {
+                return Err(invalid(
+                    "trail_fade",
+                    p,
+                    format!("must be linear, none, or a power above 0 up to {MAX_FADE_POWER}"),
+                ));
+            }
         }
         if self.balls.len() > MAX_BALLS {
             return Err(invalid(
