@@ -150,13 +150,13 @@ fn main() {
 
     println!("Default scene (320x240, 200 frames), whole process, {runs} runs interleaved:\n");
     println!(
-        "| {:<32} | {:>11} | {:>12} | {:>10} |",
+        "| {:<38} | {:>11} | {:>12} | {:>10} |",
         "program", "median (ms)", "fastest (ms)", "GIF bytes"
     );
-    println!("|{:-<34}|{:->13}|{:->14}|{:->12}|", "", "", "", "");
+    println!("|{:-<40}|{:->13}|{:->14}|{:->12}|", "", "", "", "");
     for c in &contenders {
         println!(
-            "| {:<32} | {:>11.1} | {:>12.1} | {:>10} |",
+            "| {:<38} | {:>11.1} | {:>12.1} | {:>10} |",
             c.name,
             ms(c.median()),
             ms(c.fastest()),
