@@ -11,11 +11,24 @@ use std::process::Command;
 use bouncing_ball::budget::Estimate;
 use bouncing_ball::scene::file;
 
-/// Name, scene file text and extra flags.
+/// Name, scene file text and extra flags: every preset, long runs of some, and crowds.
 const SCENES: &[(&str, &str, &[&str])] = &[
     ("lesson", "", &["--preset", "lesson"]),
-    ("elastic ×20k frames", "", &["--preset", "elastic", "--frames", "20000"]),
+    ("elastic", "", &["--preset", "elastic"]),
+    ("no-gravity", "", &["--preset", "no-gravity"]),
+    ("heavy", "", &["--preset", "heavy"]),
+    ("moon", "", &["--preset", "moon"]),
     ("many", "", &["--preset", "many"]),
+    ("billiards", "", &["--preset", "billiards"]),
+    ("slope", "", &["--preset", "slope"]),
+    ("drag", "", &["--preset", "drag"]),
+    ("pile", "", &["--preset", "pile"]),
+    ("pyramid", "", &["--preset", "pyramid"]),
+    ("lesson ×20k frames", "", &["--preset", "lesson", "--frames", "20000"]),
+    ("elastic ×20k frames", "", &["--preset", "elastic", "--frames", "20000"]),
+    ("many ×100k frames", "", &["--preset", "many", "--frames", "100000"]),
+    ("pile ×2k frames", "", &["--preset", "pile", "--frames", "2000"]),
+    ("billiards ×2k frames", "", &["--preset", "billiards", "--frames", "2000"]),
     (
         "8192² canvas, 3 frames",
         "width = 8192\nheight = 8192\nframes = 3\n[[balls]]\nx = 100.0\ny = 100.0\nradius = 50.0\n",
@@ -46,8 +59,8 @@ fn main() {
         eprintln!("(no release binary or no /usr/bin/time: predictions only)");
     }
     let dir = tempfile::tempdir().expect("a temporary folder");
-    println!("| scene | memory predicted | peak RSS | time predicted | wall time | GIF predicted | GIF |");
-    println!("|---|--:|--:|--:|--:|--:|--:|");
+    println!("| scene | memory predicted | peak RSS | time predicted | wall time | ratio | GIF predicted | GIF | ratio |");
+    println!("|---|--:|--:|--:|--:|--:|--:|--:|--:|");
     for (name, text, flags) in SCENES {
         let scene_path = dir.path().join("scene.toml");
         let mut args: Vec<String> = flags.iter().map(|s| s.to_string()).collect();
@@ -66,6 +79,7 @@ fn main() {
         let estimate = Estimate::of(&scene);
         let gif = dir.path().join("out.gif");
         let (mut rss, mut wall, mut gif_bytes) = ("-".to_string(), "-".to_string(), "-".into());
+        let (mut time_ratio, mut gif_ratio) = ("-".to_string(), "-".to_string());
         if measure {
             let output = Command::new(time)
                 .args(["-f", "%M %e"])
@@ -82,11 +96,16 @@ fn main() {
             let mut fields = last.split_whitespace();
             let kb: f64 = fields.next().and_then(|f| f.parse().ok()).unwrap_or(0.0);
             rss = format!("{:.0} MB", kb / 1024.0);
-            wall = format!("{} s", fields.next().unwrap_or("?"));
-            gif_bytes = std::fs::metadata(&gif).map_or("-".into(), |m| mb(m.len() as f64));
+            let seconds: f64 = fields.next().and_then(|f| f.parse().ok()).unwrap_or(0.0);
+            wall = format!("{seconds:.2} s");
+            time_ratio = format!("{:.2}", estimate.seconds / seconds.max(0.01));
+            if let Ok(meta) = std::fs::metadata(&gif) {
+                gif_bytes = mb(meta.len() as f64);
+                gif_ratio = format!("{:.2}", estimate.gif_bytes / meta.len() as f64);
+            }
         }
         println!(
-            "| {name} | {} | {rss} | {:.2} s | {wall} | {} | {gif_bytes} |",
+            "| {name} | {} | {rss} | {:.2} s | {wall} | {time_ratio} | {} | {gif_bytes} | {gif_ratio} |",
             mb(estimate.memory as f64),
             estimate.seconds,
             mb(estimate.gif_bytes),

@@ -5,7 +5,9 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use bouncing_ball::budget::DEFAULT_MEMORY_BUDGET;
+use bouncing_ball::budget::{
+    Budget, DEFAULT_GIF_BUDGET, DEFAULT_MEMORY_BUDGET, DEFAULT_TIME_BUDGET,
+};
 use bouncing_ball::scene::file::Canvas;
 use bouncing_ball::scene::{
     self, preset_names, InvalidValue, Overrides, SceneFileError, TrailFade,
@@ -101,6 +103,14 @@ struct Args {
     #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_BUDGET >> 20,
           value_parser = whole_number, allow_hyphen_values = true)]
     memory_budget: u64,
+    /// Refuse a run predicted to take longer than this, seconds
+    #[arg(long, value_name = "SECONDS", default_value_t = DEFAULT_TIME_BUDGET as u64,
+          value_parser = whole_number, allow_hyphen_values = true)]
+    time_budget: u64,
+    /// Refuse a run whose GIF is predicted to be bigger than this, MB
+    #[arg(long, value_name = "MB", default_value_t = DEFAULT_GIF_BUDGET >> 20,
+          value_parser = whole_number, allow_hyphen_values = true)]
+    gif_budget: u64,
     /// Print nothing on success
     #[arg(short, long)]
     quiet: bool,
@@ -310,7 +320,11 @@ fn main() -> ExitCode {
         plot: args.plot.clone().or_else(|| scene.plot.clone()),
         progress: !args.quiet,
         scene_file: args.scene.clone(),
-        memory_budget: args.memory_budget.saturating_mul(1 << 20),
+        budget: Budget {
+            memory: args.memory_budget.saturating_mul(1 << 20),
+            seconds: args.time_budget as f64,
+            gif_bytes: args.gif_budget.saturating_mul(1 << 20),
+        },
         stop,
         ..Outputs::new(&args.gif, &args.png)
     };

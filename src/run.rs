@@ -10,7 +10,7 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use crate::budget::{Estimate, OverBudget, DEFAULT_MEMORY_BUDGET};
+use crate::budget::{Budget, Estimate, OverBudget};
 use crate::gif::GifWriter;
 use crate::output::{self, AtomicFile, Output, OutputError, OutputRefused, StdoutStream};
 use crate::physics::Ball;
@@ -37,8 +37,8 @@ pub struct Outputs {
     pub progress: bool,
     /// The scene file the scene was read from, which no output may replace.
     pub scene_file: Option<PathBuf>,
-    /// The most memory a run may be predicted to need, bytes.
-    pub memory_budget: u64,
+    /// What a run may be predicted to need (memory, time, GIF size) before it is refused.
+    pub budget: Budget,
     /// Set by a signal: the run stops at the next frame and writes nothing.
     pub stop: Stop,
 }
@@ -53,7 +53,7 @@ impl Outputs {
             plot: None,
             progress: false,
             scene_file: None,
-            memory_budget: DEFAULT_MEMORY_BUDGET,
+            budget: Budget::default(),
             stop: Stop::default(),
         }
     }
@@ -174,8 +174,7 @@ fn check_finite(scene: &Scene, balls: &[Ball], frame: u32) -> Result<(), RunErro
 pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     let started = Instant::now();
     scene.validate()?;
-    let estimate = Estimate::of(scene);
-    estimate.check(outputs.memory_budget)?;
+    let estimate = Estimate::within(scene, &outputs.budget)?;
     output::check(&outputs.list(), outputs.scene_file.as_deref())?;
     let renderer = Renderer::new(scene)?;
     let plot = outputs

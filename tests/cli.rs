@@ -259,6 +259,24 @@ fn spawned_balls_fill_the_canvas_the_flags_give() {
 }
 
 #[test]
+fn a_run_predicted_beyond_the_time_budget_is_refused_before_any_work() {
+    let dir = temp_dir();
+    let started = std::time::Instant::now();
+    let output = run_in(dir.path(), &["--frames", "4294967295"]);
+    let err = stderr(&output);
+    assert_eq!(output.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "one line: {err:?}");
+    assert!(
+        err.contains("over the time budget") && err.contains("--time-budget"),
+        "{err}"
+    );
+    // Refused up front: a pilot of the physics, not the run (which would take hours).
+    assert!(started.elapsed() < std::time::Duration::from_secs(20));
+    let files: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert!(files.is_empty(), "left files behind: {files:?}");
+}
+
+#[test]
 fn the_summary_names_every_file_written() {
     let dir = temp_dir();
     let args = [

@@ -199,8 +199,9 @@ fn flag_and_value() -> BoxedStrategy<Vec<String>> {
         40 => prop::strategy::Union::new(pairs),
         10 => (prop::sample::select(flags), one_of(ODD)).prop_map(|(f, v)| vec![f.to_string(), v]),
         5 => one_of(&["-q", "--quiet", "-n", "--frames=3", "--bogus", "x", "-", "--vx=-3"]).prop_map(|a| vec![a]),
-        // Rarely, a run far longer than the cap: it must stop when asked and write nothing.
-        1 => Just(vec!["--frames".to_string(), "4000000000".to_string()]),
+        // Rarely, a run far longer than the cap (its budgets raised, or it is refused up
+        // front): it must stop when asked and write nothing.
+        1 => Just(args(&["--frames", "4000000000", "--time-budget", "100000000", "--gif-budget", "100000000"])),
     ]
     .boxed()
 }

@@ -56,3 +56,18 @@ fn every_frame_of_every_committed_preset_gif_shows_what_the_renderer_drew() {
         }
     }
 }
+
+#[test]
+fn the_predicted_gif_size_of_every_preset_is_within_three_times_the_real_one() {
+    for (name, _) in PRESETS {
+        let scene = scene_file::preset(name, 1).unwrap();
+        let predicted = bouncing_ball::budget::Estimate::of(&scene).gif_bytes;
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.gif"));
+        let real = std::fs::metadata(path).unwrap().len() as f64;
+        let ratio = predicted / real;
+        assert!(
+            (1.0 / 3.0..=3.0).contains(&ratio),
+            "{name}: predicted {predicted:.0} B, the GIF is {real} B ({ratio:.2} times)"
+        );
+    }
+}

@@ -13,6 +13,17 @@ use common::process::{
     args, changes, run_capped, send, snapshot, spawn, Caps, Finished, OddFolder, Request,
 };
 
+/// A run that would take days, with budgets raised so that it is not refused for its length
+/// (what a test of it looks at is another check, or a signal).
+const DAYS: [&str; 6] = [
+    "--frames",
+    "4000000000",
+    "--time-budget",
+    "100000000",
+    "--gif-budget",
+    "100000000",
+];
+
 /// A run that ought to be refused before any work: it gets seconds, not minutes.
 fn quick() -> Caps {
     Caps {
@@ -53,7 +64,7 @@ fn assert_refused(dir: &Path, list: &[&str], code: i32, says: &str) -> Finished 
 /// Asserts that each `(flag, path, says)` is refused up front with exit 2, changing nothing.
 fn assert_outputs_refused(dir: &Path, cases: &[(&str, &str, &str)]) {
     for (flag, path, says) in cases {
-        let list = [flag, path, "--frames", "4000000000", "-q"];
+        let list = [&[*flag, *path, "-q"][..], &DAYS].concat();
         assert_refused(dir, &list, 2, says);
     }
 }
@@ -155,7 +166,8 @@ fn two_outputs_naming_one_file_or_the_scene_file_are_refused() {
         (&["--plot", "folder"], "--plot folder: is a folder"),
     ] {
         let mut list = list.to_vec();
-        list.extend(["--frames", "4000000000", "-q"]);
+        list.extend(DAYS);
+        list.push("-q");
         assert_refused(dir.path(), &list, 2, says);
     }
 }
@@ -167,7 +179,7 @@ fn an_output_through_a_link_is_the_file_it_points_to() {
     let list = ["--gif", "previous.gif", "--trace", "link-to-previous.gif"];
     assert_refused(
         dir.path(),
-        &[&list[..], &["-n", "4000000000", "-q"]].concat(),
+        &[&list[..], &DAYS, &["-q"]].concat(),
         2,
         "same file",
     );
@@ -302,14 +314,7 @@ fn trace_dash_streams_the_csv_to_stdout_and_a_closed_pipe_is_no_error() {
 #[test]
 fn a_png_path_that_is_a_folder_fails_before_the_work_and_the_old_gif_survives() {
     let dir = OddFolder::new();
-    let list = [
-        "--preset",
-        "elastic",
-        "--frames",
-        "4000000000",
-        "--gif",
-        "previous.gif",
-    ];
+    let list = [&["--preset", "elastic", "--gif", "previous.gif"][..], &DAYS].concat();
     let run = assert_refused(
         dir.path(),
         &[&list[..], &["--png", "folder"]].concat(),
@@ -325,19 +330,23 @@ fn assert_signal_stops_cleanly(request: Request) {
     let (name, code) = request.expected();
     let dir = OddFolder::new();
     let before = snapshot(dir.path());
-    let list = args(&[
-        "--preset",
-        "elastic",
-        "--frames",
-        "4000000000",
-        "-q",
-        "--gif",
-        "previous.gif",
-        "--png",
-        "previous.png",
-        "--trace",
-        "new.csv",
-    ]);
+    let list = args(
+        &[
+            &[
+                "--preset",
+                "elastic",
+                "-q",
+                "--gif",
+                "previous.gif",
+                "--png",
+                "previous.png",
+                "--trace",
+                "new.csv",
+            ][..],
+            &DAYS,
+        ]
+        .concat(),
+    );
     let mut child = spawn(dir.path(), &list, 3 << 30);
     child.stdout = None;
     let started = Instant::now();
