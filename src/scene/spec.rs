@@ -92,6 +92,20 @@ impl fmt::Display for TrailFade {
     }
 }
 
+impl TrailFade {
+    /// Refuses a power outside (0, [`MAX_FADE_POWER`]].
+    fn check(self) -> Result<(), InvalidValue> {
+        match self {
+            TrailFade::Power(p) if !(p > 0.0 && p <= MAX_FADE_POWER) => Err(invalid(
+                "trail_fade",
+                p,
+                format!("must be linear, none, or a power above 0 up to {MAX_FADE_POWER}"),
+            )),
+            _ => Ok(()),
+        }
+    }
+}
+
 impl std::str::FromStr for TrailFade {
     type Err = String;
 
@@ -284,15 +298,7 @@ impl Scene {
                 format!("must be a multiple of 10 up to {MAX_FRAME_MS} (GIF counts hundredths of a second)"),
             ));
         }
-        if let TrailFade::Power(p) = self.trail_fade {
-            if !(p > 0.0 && p <= MAX_FADE_POWER) {
-                return Err(invalid(
-                    "trail_fade",
-                    p,
-                    format!("must be linear, none, or a power above 0 up to {MAX_FADE_POWER}"),
-                ));
-            }
-        }
+        self.trail_fade.check()?;
         if self.balls.len() > MAX_BALLS {
             return Err(invalid(
                 "balls",
