@@ -3,8 +3,8 @@
 //!
 //! A run predicted beyond its budget is refused before it starts, naming the knob that raises
 //! it: memory (2 GiB unless `--memory-budget`), time (an hour unless `--time-budget`) and the
-//! GIF's size (4 GiB unless `--gif-budget`). Below the budget, a run predicted to take over a
-//! minute or write over 1 GB draws a warning. Memory errs on the high side (it counts the
+//! GIF's size (4 GiB unless `--gif-budget`). Below the budget, a run predicted to take over
+//! 5 seconds or write over 1 GB draws a warning. Memory errs on the high side (it counts the
 //! largest each buffer can grow to); time and GIF size come from a pilot run of the physics
 //! and costs fitted to measured runs (within 3 times on the presets and long runs; see
 //! `cargo run --release --example budget` and docs/robustness.md).
@@ -178,12 +178,15 @@ impl Estimate {
     /// Works out the cost of a validated `scene`.
     pub fn of(scene: &Scene) -> Estimate {
         let (memory, biggest) = memory_of(scene);
-        Estimate::with_memory(scene, memory, biggest)
+        Estimate::with_memory(scene, memory, biggest, Activity::of(scene))
     }
 
     /// Works out the cost of a validated `scene` and refuses it if over `budget`. Memory is
     /// checked first, from the scene alone, so a scene too big for it is refused before the
-    /// pilot run of its physics allocates anything.
+    /// pilot run of its physics allocates anything. The pilot runs only when its answer can
+    /// change what happens: if even a run whose every frame changed all over would stay
+    /// under the warnings and the budget, that bound is the answer (short runs, where the
+    /// pilot would cost as much as the run).
     pub fn within(scene: &Scene, budget: &Budget) -> Result<Estimate, OverBudget> {
         let (memory, biggest) = memory_of(scene);
         if memory > budget.memory {
@@ -193,18 +196,28 @@ impl Estimate {
                 biggest,
             });
         }
-        let estimate = Estimate::with_memory(scene, memory, biggest);
-        estimate.check(budget)?;
+        let bound = Estimate::with_memory(scene, memory, biggest, Activity::at_most(scene));
+        if bound.seconds <= WARN_SECONDS.min(budget.seconds)
+            && bound.gif_bytes <= WARN_GIF_BYTES.min(budget.gif_bytes as f64)
+        {
+            return Ok(bound);
+        }
+        let estimate = Estimate::with_memory(scene, memory, biggest, Activity::of(scene));
+        estimate.check_time_and_size(budget)?;
         Ok(estimate)
     }
 
-    /// The time and GIF size of `scene`, beside its memory.
-    fn with_memory(scene: &Scene, memory: u64, biggest: &'static str) -> Estimate {
+    /// The time and GIF size of `scene` when its frames change as `activity` says, beside its
+    /// memory.
+    fn with_memory(
+        scene: &Scene,
+        memory: u64,
+        biggest: &'static str,
+        activity: Activity,
+    ) -> Estimate {
         let n = scene.balls.len() as f64;
         let canvas = f64::from(scene.width) * f64::from(scene.height);
-        // Time and GIF size: what every frame costs, and what the frames that change cost,
-        // as a pilot run of the physics says they change.
-        let activity = Activity::of(scene);
+        // Time and GIF size: what every frame costs, and what the frames that change cost.
         let steps = f64::from(scene.motion.substeps);
         let per_step = match scene.ball_collisions {
             Some(_) => NS_PER_COLLIDING_BALL_STEP,
@@ -233,15 +246,8 @@ impl Estimate {
         }
     }
 
-    /// Refuses a scene predicted to need more than `budget` allows.
-    pub fn check(&self, budget: &Budget) -> Result<(), OverBudget> {
-        if self.memory > budget.memory {
-            return Err(OverBudget::Memory {
-                needed: self.memory,
-                budget: budget.memory,
-                biggest: self.biggest,
-            });
-        }
+    /// Refuses a scene predicted to take more time or GIF bytes than `budget` allows.
+    fn check_time_and_size(&self, budget: &Budget) -> Result<(), OverBudget> {
         if self.seconds > budget.seconds {
             return Err(OverBudget::Time {
                 needed: self.seconds,
@@ -308,6 +314,19 @@ struct Activity {
 }
 
 impl Activity {
+    /// The most the model can say for `scene`: every frame changed, all over the canvas, as
+    /// much as all its balls and trails can.
+    fn at_most(scene: &Scene) -> Activity {
+        let frames = f64::from(scene.frames);
+        let canvas = f64::from(scene.width) * f64::from(scene.height);
+        let drawn: f64 = scene.balls.iter().map(|b| drawn_pixels(b, scene)).sum();
+        Activity {
+            changed_frames: frames,
+            rect_pixels: frames * canvas,
+            changed_pixels: frames * drawn.min(canvas),
+        }
+    }
+
     fn of(scene: &Scene) -> Activity {
         let n = scene.balls.len().max(1) as f64;
         let budget = match scene.ball_collisions {
