@@ -215,17 +215,15 @@ pub fn is_reserved_on_windows(name: &std::ffi::OsStr) -> bool {
     let name = name.to_string_lossy();
     let stem = name.split('.').next().unwrap_or_default();
     let stem = stem.trim_end_matches([' ', '.']).to_ascii_uppercase();
-    match stem.as_str() {
-        "CON" | "PRN" | "AUX" | "NUL" => true,
-        _ => {
-            let (port, digit) = stem.split_at(stem.len().min(3));
-            matches!(port, "COM" | "LPT")
-                && matches!(
-                    digit,
-                    "1" | "2" | "3" | "4" | "5" | "6" | "7" | "8" | "9" | "¹" | "²" | "³"
-                )
-        }
-    }
+    let port = |prefix| {
+        stem.strip_prefix(prefix).is_some_and(|digit| {
+            matches!(
+                digit,
+                "1" | "2" | "3" | "4" | "5" | "6" | "7" | "8" | "9" | "¹" | "²" | "³"
+            )
+        })
+    };
+    matches!(stem.as_str(), "CON" | "PRN" | "AUX" | "NUL") || port("COM") || port("LPT")
 }
 
 /// Refuses, before any work, outputs that would replace something that is not a regular
@@ -432,5 +430,37 @@ impl Write for StdoutStream {
         }
         let result = self.out.flush().map(|()| 0);
         self.unless_closed(result, 0).map(|_| ())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::is_reserved_on_windows;
+    use std::ffi::OsStr;
+
+    #[test]
+    fn windows_device_names_are_known_in_any_case_and_with_any_extension() {
+        for name in [
+            "NUL",
+            "con.png",
+            "Aux.tar.gz",
+            "COM9 .gif",
+            "lpt1",
+            "com³.gif",
+            "prn.",
+        ] {
+            assert!(is_reserved_on_windows(OsStr::new(name)), "{name}");
+        }
+        for name in [
+            "null.gif",
+            "com0.gif",
+            "COM10",
+            "console.png",
+            "éé.gif",
+            "ünï.png",
+            "Ⅽ",
+        ] {
+            assert!(!is_reserved_on_windows(OsStr::new(name)), "{name}");
+        }
     }
 }
