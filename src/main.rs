@@ -75,18 +75,8 @@ const TRAIL_COLOUR: [u8; 3] = [60, 140, 255];
 struct Args {
     #[command(subcommand)]
     command: Option<Command>,
-    /// Load the scene from a TOML file (- for standard input)
-    #[arg(short, long, conflicts_with = "preset")]
-    scene: Option<PathBuf>,
-    /// Load a bundled scene
-    #[arg(short, long, value_parser = preset_names())]
-    preset: Option<String>,
-    /// Seed for everything random (same seed, same bytes out)
-    #[arg(long, default_value_t = 1, value_parser = whole_number, allow_hyphen_values = true)]
-    seed: u64,
-    // --width to --frame-ms: the scene settings, a row each in src/scene/overrides.rs.
     #[command(flatten)]
-    settings: Overrides,
+    scene: SceneArgs,
     /// Where to write the animated GIF
     #[arg(short = 'o', long, default_value = "bouncing_ball.gif")]
     gif: PathBuf,
@@ -117,6 +107,24 @@ struct Args {
     /// Print help
     #[arg(short, long, action = ArgAction::HelpShort)]
     help: Option<bool>,
+}
+
+/// What to simulate: a scene file, a preset or the lesson's scene, and the flags laid over it
+/// (the main command's, and every subcommand that runs a scene).
+#[derive(clap::Args, Debug)]
+struct SceneArgs {
+    /// Load the scene from a TOML file (- for standard input)
+    #[arg(short, long, conflicts_with = "preset")]
+    scene: Option<PathBuf>,
+    /// Load a bundled scene
+    #[arg(short, long, value_parser = preset_names())]
+    preset: Option<String>,
+    /// Seed for everything random (same seed, same bytes out)
+    #[arg(long, default_value_t = 1, value_parser = whole_number, allow_hyphen_values = true)]
+    seed: u64,
+    // --width to --frame-ms: the scene settings, a row each in src/scene/overrides.rs.
+    #[command(flatten)]
+    settings: Overrides,
 }
 
 #[derive(Subcommand, Debug)]
@@ -152,7 +160,7 @@ fn lesson_scene() -> Scene {
     }
 }
 
-impl Args {
+impl SceneArgs {
     /// The scene to run: a file, a preset or the lesson's, with the typed flags laid over it.
     fn scene(&self) -> Result<Scene, SceneFileError> {
         // A typed canvas size is there before any ball is spawned, so spawned balls fill it.
@@ -308,7 +316,7 @@ fn main() -> ExitCode {
         );
         return ExitCode::SUCCESS;
     }
-    let scene = match args.scene() {
+    let scene = match args.scene.scene() {
         Ok(scene) => scene,
         Err(error) => {
             eprintln!("error: {error}");
@@ -319,7 +327,7 @@ fn main() -> ExitCode {
         trace: args.trace.clone(),
         plot: args.plot.clone().or_else(|| scene.plot.clone()),
         progress: !args.quiet,
-        scene_file: args.scene.clone(),
+        scene_file: args.scene.scene.clone(),
         budget: Budget {
             memory: args.memory_budget.saturating_mul(1 << 20),
             seconds: args.time_budget as f64,
@@ -346,7 +354,7 @@ fn main() -> ExitCode {
                 RunError::Invalid(bad) => {
                     let typed = |name: &str| match name {
                         "plot" => args.plot.is_some(),
-                        setting => args.settings.is_typed(setting),
+                        setting => args.scene.settings.is_typed(setting),
                     };
                     eprintln!("error: {}", refuse_value(bad, typed))
                 }
