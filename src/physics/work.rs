@@ -1,6 +1,7 @@
 //! A tally of the work each effect does, kept only with the `work-tally` feature (the tests
 //! turn it on), so a test can prove that an effect a scene does not call for never runs.
-//! Without it every `tally` compiles to nothing.
+//! Without it every `tally` compiles to nothing. Drawing and the GIF's comparison count their
+//! pixels here too, so a test can prove that a frame that did not change costs nothing.
 
 /// A piece of per-frame work that only some scenes call for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -19,10 +20,14 @@ pub enum Work {
     Contacts,
     /// One ball moved by the lesson's own step, `Ball::step`.
     LessonStep,
+    /// Pixels written while drawing a frame (cleared or covered by a circle).
+    PixelsDrawn,
+    /// Pixels of two frames compared to find what changed.
+    PixelsCompared,
 }
 
 #[cfg(feature = "work-tally")]
-const KINDS: usize = 7;
+const KINDS: usize = 9;
 
 #[cfg(feature = "work-tally")]
 thread_local! {
@@ -32,14 +37,20 @@ thread_local! {
 /// Counts one unit of `work` on this thread (with the `work-tally` feature only).
 #[inline(always)]
 pub fn tally(work: Work) {
+    tally_many(work, 1);
+}
+
+/// Counts `units` of `work` on this thread at once (with the `work-tally` feature only).
+#[inline(always)]
+pub fn tally_many(work: Work, units: u64) {
     #[cfg(feature = "work-tally")]
     COUNTS.with(|counts| {
         let mut c = counts.get();
-        c[work as usize] += 1;
+        c[work as usize] += units;
         counts.set(c);
     });
     #[cfg(not(feature = "work-tally"))]
-    let _ = work;
+    let _ = (work, units);
 }
 
 /// How much `work` this thread has done since the last `reset` (always 0 without the `work-tally` feature).
