@@ -1,63 +1,33 @@
-//! What changed between two frames: the smallest rectangle holding every changed pixel,
-//! cut out to be laid over the previous frame.
+//! What changed between two frames: the smallest rectangle holding every changed pixel
+//! (of the whole frame, or of the areas the renderer drew again), cut out to be laid over
+//! the previous frame.
 //!
 //! Knows frames of palette indices, nothing of balls and nothing of GIF.
 
-use std::ops::Range;
-
+use crate::physics::work::{tally_many, Work};
+pub use crate::render::dirty::{paste, Rect};
 use crate::render::IndexedFrame;
-
-/// A rectangle of a frame, px from the top-left corner.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Rect {
-    pub left: u32,
-    pub top: u32,
-    pub width: u32,
-    pub height: u32,
-}
-
-impl Rect {
-    /// The whole of `frame`.
-    pub fn whole(frame: &IndexedFrame) -> Rect {
-        Rect {
-            left: 0,
-            top: 0,
-            width: frame.width(),
-            height: frame.height(),
-        }
-    }
-
-    /// The top-left pixel only: what a frame identical to the last one still writes, so
-    /// that it still counts as a frame and keeps its time on screen.
-    pub fn corner() -> Rect {
-        Rect {
-            left: 0,
-            top: 0,
-            width: 1,
-            height: 1,
-        }
-    }
-
-    /// Where each of its rows lies in the bytes of a frame `frame_width` px wide, top first.
-    fn rows(self, frame_width: u32) -> impl Iterator<Item = Range<usize>> {
-        let (width, left) = (frame_width as usize, self.left as usize);
-        let top = self.top as usize;
-        (top..top + self.height as usize).map(move |y| {
-            let start = y * width + left;
-            start..start + self.width as usize
-        })
-    }
-}
 
 /// The smallest rectangle outside which `previous` and `current` are equal; `None` when the
 /// two frames are identical. Both must be the same size.
 pub fn changed_rect(previous: &IndexedFrame, current: &IndexedFrame) -> Option<Rect> {
-    let width = current.width() as usize;
-    let rows = previous
-        .as_raw()
-        .chunks_exact(width)
-        .zip(current.as_raw().chunks_exact(width));
-    // Columns left..right and rows top..bottom hold every change seen so far.
+    changed_rect_within(previous, current, Rect::whole(current))
+}
+
+/// The smallest rectangle holding every pixel of `area` where `previous` and `current`
+/// differ; `None` when they are equal there. Pixels outside `area` are not looked at.
+pub fn changed_rect_within(
+    previous: &IndexedFrame,
+    current: &IndexedFrame,
+    area: Rect,
+) -> Option<Rect> {
+    tally_many(Work::PixelsCompared, area.area());
+    let rows = area.rows(current.width()).map(|span| {
+        let old = &previous.as_raw()[span.clone()];
+        (old, &current.as_raw()[span])
+    });
+    let width = area.width as usize;
+    // Columns left..right and rows top..bottom of `area` hold every change seen so far.
     let (mut left, mut right) = (width, 0);
     let (mut top, mut bottom) = (None, 0);
     for (y, (old, new)) in rows.enumerate() {
@@ -78,8 +48,8 @@ pub fn changed_rect(previous: &IndexedFrame, current: &IndexedFrame) -> Option<R
     }
     let top = top?;
     Some(Rect {
-        left: left as u32,
-        top: top as u32,
+        left: area.left + left as u32,
+        top: area.top + top as u32,
         width: (right - left) as u32,
         height: (bottom - top) as u32,
     })
@@ -118,13 +88,5 @@ pub fn crop(frame: &IndexedFrame, rect: Rect, out: &mut Vec<u8>) {
     out.clear();
     for span in rect.rows(frame.width()) {
         out.extend_from_slice(&frame.as_raw()[span]);
-    }
-}
-
-/// Copies `rect` of `from` onto the same place in `onto` (both the same size).
-pub fn paste(from: &IndexedFrame, rect: Rect, onto: &mut IndexedFrame) {
-    let onto: &mut [u8] = onto;
-    for span in rect.rows(from.width()) {
-        onto[span.clone()].copy_from_slice(&from.as_raw()[span]);
     }
 }

@@ -4,8 +4,10 @@
 //! - [`ellipse`]: solid circles, exactly the pixels Pillow's `ImageDraw.ellipse` fills.
 //! - [`line`]: one-pixel floor segments.
 //! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
+//! - [`dirty`]: rectangles of a frame, and tiles marked where it may have changed.
 //! - [`png`]: one frame as an RGB PNG.
 
+pub mod dirty;
 pub mod ellipse;
 pub mod line;
 pub mod palette;
