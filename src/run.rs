@@ -18,7 +18,7 @@ use crate::plot::Plot;
 use crate::progress::Progress;
 use crate::render::palette::{IndexedFrame, Palette, TooManyColours};
 use crate::render::raster::Renderer;
-use crate::render::write_png;
+use crate::render::{write_png, Canvas};
 use crate::scene::{InvalidValue, Scene};
 use crate::stop::{Signal, Stop};
 use crate::trace;
@@ -192,8 +192,8 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
     }
 
     let mut writers = Writers::open(scene, outputs, &renderer, plot, &mut files)?;
-    let last_frame = animate(scene, outputs, &renderer, &mut writers)?;
-    writers.finish(&last_frame, renderer.palette())?;
+    let canvas = animate(scene, outputs, &renderer, &mut writers)?;
+    writers.finish(canvas.frame(), renderer.palette())?;
 
     // The last moment a signal stops the run; from here on the files go into place.
     stop_if_asked(outputs, scene.frames, scene.frames)?;
@@ -210,26 +210,27 @@ pub fn run(scene: &Scene, outputs: &Outputs) -> Result<Summary, RunError> {
 }
 
 /// Simulates every frame of `scene`, drawing it and handing it to `writers`; returns the
-/// last frame drawn, for the still.
+/// canvas with the last frame drawn, for the still.
 fn animate(
     scene: &Scene,
     outputs: &Outputs,
     renderer: &Renderer,
     writers: &mut Writers,
-) -> Result<IndexedFrame, RunError> {
+) -> Result<Canvas, RunError> {
     let mut simulation = scene.simulation();
-    let mut frame = renderer.new_frame();
+    let mut canvas = renderer.canvas();
     let mut progress = Progress::new(scene.frames, outputs.progress);
     for n in 0..scene.frames {
         stop_if_asked(outputs, n, scene.frames)?;
         simulation.step();
         check_finite(scene, simulation.balls(), n)?;
         writers.record(n, simulation.balls())?;
-        renderer.draw(simulation.balls(), &mut frame);
-        writers.write_frame(&frame)?;
+        // Only what changed is drawn again, and only there does the GIF look for changes.
+        canvas.redraw(renderer, simulation.balls());
+        writers.write_frame(&canvas)?;
         progress.frames_done(n + 1);
     }
-    Ok(frame)
+    Ok(canvas)
 }
 
 /// Every file a run writes, open from before the first frame until they all go into place
@@ -327,10 +328,10 @@ impl<'a> Writers<'a> {
         Ok(())
     }
 
-    /// Queues a drawn frame for the GIF.
-    fn write_frame(&mut self, frame: &IndexedFrame) -> Result<(), OutputError> {
+    /// Queues the canvas's frame for the GIF.
+    fn write_frame(&mut self, canvas: &Canvas) -> Result<(), OutputError> {
         self.gif
-            .write_frame(frame)
+            .write_changes(canvas.frame(), canvas.damage())
             .map_err(OutputError::at(&self.outputs.gif))
     }
 

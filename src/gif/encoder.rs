@@ -5,7 +5,9 @@
 //! frame, each frame is only the rectangle that changed ([`super::delta`]), laid over the
 //! last one (disposal Keep), written in whichever of a few encodings is smallest
 //! ([`super::cheapest`]). A frame identical to the one before is not written at all: the one
-//! before is shown that much longer (its delay grows), as `gifsicle -O` does.
+//! before is shown that much longer (its delay grows), as `gifsicle -O` does. A renderer that
+//! knows what it drew again says so ([`crate::render::Damage`]): only there are pixels
+//! compared, and a frame it did not draw again is not compared at all.
 //!
 //! Frames wait in a queue of bounded size. The queue goes to a background thread when it is
 //! full, or earlier when that thread is free and there is a frame for each core; the thread
@@ -24,9 +26,9 @@ use std::time::{Duration, Instant};
 use rayon::prelude::*;
 
 use super::cheapest::{Coder, Encoding};
-use super::delta::{changed_rect, crop, paste, Rect};
+use super::delta::{changed_rect, changed_rect_within, crop, paste, Rect};
 use crate::render::palette::Palette;
-use crate::render::IndexedFrame;
+use crate::render::{Damage, IndexedFrame};
 
 /// The most pixels a queue holds (unless a single frame is bigger): what bounds memory.
 /// Each queued pixel takes about three bytes: its index, the index beneath it, and its share
@@ -220,6 +222,13 @@ impl<W: Write> GifWriter<W> {
     /// Queues one frame (the canvas's size), sending the queue to be encoded when it is full
     /// or the encoder is free.
     pub fn write_frame(&mut self, frame: &IndexedFrame) -> io::Result<()> {
+        self.write_changes(frame, Damage::Whole)
+    }
+
+    /// Queues one frame that differs from the last one queued only as `damage` says (a
+    /// [`crate::render::Canvas`] says so): only there is it compared with the last frame,
+    /// and not at all when unchanged. The GIF is the same as [`GifWriter::write_frame`]'s.
+    pub fn write_changes(&mut self, frame: &IndexedFrame, damage: Damage) -> io::Result<()> {
         if frame.dimensions() != (self.width, self.height) {
             return Err(io::Error::new(
                 io::ErrorKind::InvalidInput,
@@ -233,7 +242,14 @@ impl<W: Write> GifWriter<W> {
             ));
         }
         let started = Instant::now();
-        let changed = self.shown.as_ref().map(|shown| changed_rect(shown, frame));
+        let changed = self.shown.as_ref().map(|shown| match damage {
+            Damage::Unchanged => None,
+            Damage::Whole => changed_rect(shown, frame),
+            Damage::Areas(areas) => areas
+                .iter()
+                .filter_map(|&area| changed_rect_within(shown, frame, area))
+                .reduce(Rect::union),
+        });
         if changed == Some(None) && self.show_last_longer() {
             self.timings.changes += started.elapsed();
             return Ok(());

@@ -4,7 +4,8 @@
 //! - [`ellipse`]: solid circles, exactly the pixels Pillow's `ImageDraw.ellipse` fills.
 //! - [`line`]: one-pixel floor segments.
 //! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
-//! - [`dirty`]: rectangles of a frame, and tiles marked where it may have changed.
+//! - [`redraw`]: frame after frame, drawn again only where something changed; [`dirty`]: the
+//!   rectangles and tiles that say where.
 //! - [`png`]: one frame as an RGB PNG.
 
 pub mod dirty;
@@ -13,8 +14,10 @@ pub mod line;
 pub mod palette;
 pub mod png;
 pub mod raster;
+pub mod redraw;
 
 pub use palette::IndexedFrame;
 pub use palette::Palette;
 pub use png::write_png;
 pub use raster::{to_rgb, Renderer};
+pub use redraw::{Canvas, Damage};

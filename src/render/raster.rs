@@ -15,9 +15,11 @@ use super::palette::{
     drawn_dots, fade_levels, quantised_fade, shade, Colours, IndexedFrame, Palette, TooManyColours,
     TrailLook,
 };
+use super::redraw::Canvas;
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
 use crate::physics::vec2::Vec2;
+use crate::physics::work::{tally_many, Work};
 use crate::scene::spec::{Rgb, Scene};
 
 /// Draws a scene's balls with the scene's colours.
@@ -39,6 +41,8 @@ struct BallStyle {
     ball: u8,
     /// Its trail colour's shades, laid out as [`ShadeTable::shades`].
     trail_shades: Arc<[u8]>,
+    /// The most trail dots it draws: one fewer than its trail keeps.
+    most_dots: usize,
 }
 
 impl BallStyle {
@@ -114,9 +118,11 @@ impl Renderer {
         let styles = balls
             .into_iter()
             .zip(table_of_ball)
-            .map(|(ball, table)| BallStyle {
+            .zip(&scene.balls)
+            .map(|((ball, table), spec)| BallStyle {
                 ball: renumber(ball),
                 trail_shades: Arc::clone(&tables[table]),
+                most_dots: drawn_dots(spec.trail).len(),
             })
             .collect();
         Ok(Renderer {
@@ -141,11 +147,28 @@ impl Renderer {
         GrayImage::from_pixel(self.width, self.height, Luma([self.background]))
     }
 
+    /// A canvas to draw frame after frame on, each drawn again only where it changed
+    /// ([`Canvas::redraw`]).
+    pub fn canvas(&self) -> Canvas {
+        let mut base = self.new_frame();
+        self.draw_background(&mut base);
+        Canvas::new(base, self.styles.iter().map(|style| style.most_dots))
+    }
+
     /// Draws `balls` into `frame`: background and floors, then every trail (oldest dot first, fading
     /// and shrinking into the past; the newest lies under the ball), then every ball on top,
     /// so no trail hides a ball.
     pub fn draw(&self, balls: &[Ball], frame: &mut IndexedFrame) {
+        self.draw_background(frame);
+        for circle in self.circles(balls) {
+            fill_circle(frame, circle.x, circle.y, circle.radius, circle.index);
+        }
+    }
+
+    /// Fills `frame` with the background and draws the floors on it: what lies under the balls.
+    pub fn draw_background(&self, frame: &mut IndexedFrame) {
         frame.fill(self.background);
+        tally_many(Work::PixelsDrawn, frame.as_raw().len() as u64);
         let canvas = [f64::from(self.width), f64::from(self.height)];
         for floor in &self.floors {
             let [from, to] = floor.ends().map(Vec2::to_array);
@@ -154,17 +177,52 @@ impl Renderer {
                 draw_line(frame, point(from), point(to), self.floor);
             }
         }
-        for (ball, style) in balls.iter().zip(&self.styles) {
-            let n = ball.trail.len();
-            for (i, &(x, y)) in ball.trail.iter().enumerate().take(drawn_dots(n).end) {
-                let radius = ball.radius * self.look.size_share(i, n);
-                fill_circle(frame, x, y, radius, style.trail_shade(i, n));
-            }
-        }
-        for (ball, style) in balls.iter().zip(&self.styles) {
-            fill_circle(frame, ball.x, ball.y, ball.radius, style.ball);
-        }
     }
+
+    /// Every circle [`Renderer::draw`] fills for `balls`, in the order it fills them: every
+    /// trail's dots, then every ball.
+    pub fn circles<'a>(&'a self, balls: &'a [Ball]) -> impl Iterator<Item = Circle> + 'a {
+        let dots = balls.iter().enumerate().flat_map(|(i, ball)| {
+            let points = ball.trail.iter().copied();
+            self.trail_dots(i, points, ball.trail.len(), ball.radius)
+        });
+        let tops = balls.iter().zip(&self.styles).map(|(ball, style)| Circle {
+            x: ball.x,
+            y: ball.y,
+            radius: ball.radius,
+            index: style.ball,
+        });
+        dots.chain(tops)
+    }
+
+    /// The dots drawn of the trail of ball number `ball`, of radius `radius`, when the trail
+    /// holds `n` points (`points`, oldest first): all but the newest, fading and shrinking
+    /// into the past.
+    pub fn trail_dots<'a>(
+        &'a self,
+        ball: usize,
+        points: impl Iterator<Item = (f64, f64)> + 'a,
+        n: usize,
+        radius: f64,
+    ) -> impl Iterator<Item = Circle> + 'a {
+        let style = &self.styles[ball];
+        let dots = points.take(drawn_dots(n).end).enumerate();
+        dots.map(move |(i, (x, y))| Circle {
+            x,
+            y,
+            radius: radius * self.look.size_share(i, n),
+            index: style.trail_shade(i, n),
+        })
+    }
+}
+
+/// One filled circle of a frame: centre and radius, px, and its palette index.
+#[derive(Clone, Copy, Debug)]
+pub struct Circle {
+    pub x: f64,
+    pub y: f64,
+    pub radius: f64,
+    pub index: u8,
 }
 
 /// The palette while the renderer fills it: a colour that does not fit is the scene's
