@@ -218,7 +218,7 @@ fn animate(
     writers: &mut Writers,
 ) -> Result<Canvas, RunError> {
     let mut simulation = scene.simulation();
-    let mut canvas = renderer.canvas();
+    let mut canvas = Canvas::new(renderer);
     let mut progress = Progress::new(scene.frames, outputs.progress);
     for n in 0..scene.frames {
         stop_if_asked(outputs, n, scene.frames)?;

@@ -31,32 +31,26 @@ pub const MAX_DIAMETER: f64 = 32_768.0;
 /// pixel for pixel as Pillow's `ImageDraw.ellipse` fills its bounding box. A negative radius
 /// (a box Pillow refuses) fills nothing.
 pub fn fill_circle(frame: &mut IndexedFrame, x: f64, y: f64, radius: f64, index: u8) {
-    fill_circle_within(frame, x, y, radius, index, Rect::whole(frame));
+    if let Some(pixels) = PixelBox::of(x, y, radius, frame) {
+        fill_box(frame, pixels, index, Rect::whole(frame));
+    }
 }
 
-/// Fills the pixels of the circle [`fill_circle`] fills that lie inside `clip` (a rectangle
-/// of the canvas), and no others: drawn piece by piece, a circle covers what it would whole.
-pub fn fill_circle_within(
-    frame: &mut IndexedFrame,
-    x: f64,
-    y: f64,
-    radius: f64,
-    index: u8,
-    clip: Rect,
-) {
-    let Some(PixelBox { x0, y0, a, b }) = PixelBox::of(x, y, radius, frame) else {
-        return;
-    };
+/// Fills the circle whose box of whole pixels is `pixels`, as [`fill_circle`] does, but only
+/// where it lies inside `clip` (a rectangle of the canvas): drawn piece by piece, a circle
+/// covers what it would whole.
+pub fn fill_box(frame: &mut IndexedFrame, pixels: PixelBox, index: u8, clip: Rect) {
+    let [x0, y0, a, b] = [pixels.x0, pixels.y0, pixels.a, pixels.b].map(i64::from);
     let (left, top) = (i64::from(clip.left), i64::from(clip.top));
     let (right, bottom) = (left + i64::from(clip.width), top + i64::from(clip.height));
-    let columns = frame.width() as i64;
-    let pixels: &mut [u8] = frame;
+    let columns = i64::from(frame.width());
+    let frame: &mut [u8] = frame;
     let mut fill_row = |row: i64, half_width: i64| {
         let first = (x0 + (a - half_width) / 2).max(left);
         let last = (x0 + (a + half_width) / 2).min(right - 1);
         if (top..bottom).contains(&row) && first <= last {
             let start = (row * columns) as usize;
-            pixels[start + first as usize..=start + last as usize].fill(index);
+            frame[start + first as usize..=start + last as usize].fill(index);
             tally_many(Work::PixelsDrawn, (last - first + 1) as u64);
         }
     };
@@ -66,33 +60,22 @@ pub fn fill_circle_within(
     }
 }
 
-/// The pixels [`fill_circle`] may fill, cut to the canvas: the circle's box of whole pixels.
-/// `None` when it fills none.
-pub fn circle_box(x: f64, y: f64, radius: f64, frame: &IndexedFrame) -> Option<Rect> {
-    let PixelBox { x0, y0, a, b } = PixelBox::of(x, y, radius, frame)?;
-    let (left, top) = (x0.max(0), y0.max(0));
-    let right = (x0 + a + 1).min(i64::from(frame.width()));
-    let bottom = (y0 + b + 1).min(i64::from(frame.height()));
-    (left < right && top < bottom).then(|| Rect {
-        left: left as u32,
-        top: top as u32,
-        width: (right - left) as u32,
-        height: (bottom - top) as u32,
-    })
-}
-
 /// A circle's float box cut to whole pixels (rule 1): from column `x0`, row `y0`, spanning
-/// `a` by `b` pixels (so columns `x0..=x0 + a`, rows `y0..=y0 + b`).
-struct PixelBox {
-    x0: i64,
-    y0: i64,
-    a: i64,
-    b: i64,
+/// `a` by `b` pixels (so columns `x0..=x0 + a`, rows `y0..=y0 + b`). Everything after rule 1
+/// is whole numbers: two circles with the same box fill the same pixels, however their
+/// centres and radii differ below a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelBox {
+    x0: i32,
+    y0: i32,
+    a: i32,
+    b: i32,
 }
 
 impl PixelBox {
-    /// `None` when the circle fills nothing on `frame`.
-    fn of(x: f64, y: f64, radius: f64, frame: &IndexedFrame) -> Option<PixelBox> {
+    /// The box of the circle of centre `(x, y)` and radius `radius` (px); `None` when the
+    /// circle fills nothing on `frame`.
+    pub fn of(x: f64, y: f64, radius: f64, frame: &IndexedFrame) -> Option<PixelBox> {
         let (width, height) = (f64::from(frame.width()), f64::from(frame.height()));
         let (left, right, top, bottom) = (x - radius, x + radius, y - radius, y + radius);
         // Truncation puts pixel 0 within reach of any edge above -1; NaN fails every test.
@@ -100,10 +83,25 @@ impl PixelBox {
         if !(on_canvas && (0.0..MAX_DIAMETER).contains(&(2.0 * radius))) {
             return None;
         }
-        // In range for i64 now, so `as` truncates towards zero exactly as C's (int) does.
-        let (x0, y0) = (left as i64, top as i64);
-        let (a, b) = (right as i64 - x0, bottom as i64 - y0);
+        // Within 32,768 px of the canvas now, so `as` truncates towards zero exactly as C's
+        // (int) does, and the box fits `i32`.
+        let (x0, y0) = (left as i32, top as i32);
+        let (a, b) = (right as i32 - x0, bottom as i32 - y0);
         (a != 0 || b != 0).then_some(PixelBox { x0, y0, a, b })
+    }
+
+    /// The part of the box on `frame`: every pixel the circle may fill. `None` when empty.
+    pub fn on(self, frame: &IndexedFrame) -> Option<Rect> {
+        let [x0, y0, a, b] = [self.x0, self.y0, self.a, self.b].map(i64::from);
+        let (left, top) = (x0.max(0), y0.max(0));
+        let right = (x0 + a + 1).min(i64::from(frame.width()));
+        let bottom = (y0 + b + 1).min(i64::from(frame.height()));
+        (left < right && top < bottom).then(|| Rect {
+            left: left as u32,
+            top: top as u32,
+            width: (right - left) as u32,
+            height: (bottom - top) as u32,
+        })
     }
 }
 

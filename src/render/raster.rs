@@ -15,7 +15,6 @@ use super::palette::{
     drawn_dots, fade_levels, quantised_fade, shade, Colours, IndexedFrame, Palette, TooManyColours,
     TrailLook,
 };
-use super::redraw::Canvas;
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
 use crate::physics::vec2::Vec2;
@@ -147,12 +146,9 @@ impl Renderer {
         GrayImage::from_pixel(self.width, self.height, Luma([self.background]))
     }
 
-    /// A canvas to draw frame after frame on, each drawn again only where it changed
-    /// ([`Canvas::redraw`]).
-    pub fn canvas(&self) -> Canvas {
-        let mut base = self.new_frame();
-        self.draw_background(&mut base);
-        Canvas::new(base, self.styles.iter().map(|style| style.most_dots))
+    /// The most trail dots each ball draws (one fewer than its trail keeps), ball by ball.
+    pub fn most_dots(&self) -> impl Iterator<Item = usize> + '_ {
+        self.styles.iter().map(|style| style.most_dots)
     }
 
     /// Draws `balls` into `frame`: background and floors, then every trail (oldest dot first, fading
@@ -160,9 +156,15 @@ impl Renderer {
     /// so no trail hides a ball.
     pub fn draw(&self, balls: &[Ball], frame: &mut IndexedFrame) {
         self.draw_background(frame);
-        for circle in self.circles(balls) {
-            fill_circle(frame, circle.x, circle.y, circle.radius, circle.index);
-        }
+        self.draw_circles(balls, frame);
+    }
+
+    /// Draws every circle of `balls` into `frame`, over whatever it holds, in [`Renderer::circles`]'
+    /// order.
+    pub fn draw_circles(&self, balls: &[Ball], frame: &mut IndexedFrame) {
+        // `for_each`, not `for`: the nested iterators run as plain loops.
+        (self.circles(balls))
+            .for_each(|circle| fill_circle(frame, circle.x, circle.y, circle.radius, circle.index));
     }
 
     /// Fills `frame` with the background and draws the floors on it: what lies under the balls.
@@ -182,37 +184,34 @@ impl Renderer {
     /// Every circle [`Renderer::draw`] fills for `balls`, in the order it fills them: every
     /// trail's dots, then every ball.
     pub fn circles<'a>(&'a self, balls: &'a [Ball]) -> impl Iterator<Item = Circle> + 'a {
-        let dots = balls.iter().enumerate().flat_map(|(i, ball)| {
-            let points = ball.trail.iter().copied();
-            self.trail_dots(i, points, ball.trail.len(), ball.radius)
-        });
-        let tops = balls.iter().zip(&self.styles).map(|(ball, style)| Circle {
-            x: ball.x,
-            y: ball.y,
-            radius: ball.radius,
-            index: style.ball,
-        });
+        // Balls beyond the scene's have no colours, and are not drawn.
+        let numbered = || balls.iter().take(self.styles.len()).enumerate();
+        let dots = numbered().flat_map(|(i, ball)| self.trail_dots(i, ball));
+        let tops = numbered().map(|(i, ball)| self.ball_circle(i, ball));
         dots.chain(tops)
     }
 
-    /// The dots drawn of the trail of ball number `ball`, of radius `radius`, when the trail
-    /// holds `n` points (`points`, oldest first): all but the newest, fading and shrinking
-    /// into the past.
-    pub fn trail_dots<'a>(
-        &'a self,
-        ball: usize,
-        points: impl Iterator<Item = (f64, f64)> + 'a,
-        n: usize,
-        radius: f64,
-    ) -> impl Iterator<Item = Circle> + 'a {
-        let style = &self.styles[ball];
-        let dots = points.take(drawn_dots(n).end).enumerate();
-        dots.map(move |(i, (x, y))| Circle {
+    /// The dots drawn of the trail of `ball`, ball number `i`: all but the newest point,
+    /// oldest first, fading and shrinking into the past.
+    pub fn trail_dots<'a>(&'a self, i: usize, ball: &'a Ball) -> impl Iterator<Item = Circle> + 'a {
+        let (style, n) = (&self.styles[i], ball.trail.len());
+        let dots = ball.trail.iter().take(drawn_dots(n).end).enumerate();
+        dots.map(move |(i, &(x, y))| Circle {
             x,
             y,
-            radius: radius * self.look.size_share(i, n),
+            radius: ball.radius * self.look.size_share(i, n),
             index: style.trail_shade(i, n),
         })
+    }
+
+    /// The circle of `ball` itself, ball number `i`.
+    pub fn ball_circle(&self, i: usize, ball: &Ball) -> Circle {
+        Circle {
+            x: ball.x,
+            y: ball.y,
+            radius: ball.radius,
+            index: self.styles[i].ball,
+        }
     }
 }
 

@@ -2,8 +2,8 @@
 //!
 //! In many scenes most of the canvas stays as it was from one frame to the next: a pile at
 //! rest, a few balls moving among many still ones. A [`Canvas`] remembers what each ball drew
-//! in the last frame: its centre, its radius and its trail's drawn points, to the bit. With
-//! the ball's fixed colours these decide every circle it drew. For the next frame:
+//! in the last frame: the box of whole pixels of each of its circles (its trail's dots, then
+//! itself) and how long its trail was (which picks the dots' shades). For the next frame:
 //!
 //! - if no ball would draw anything different, nothing is drawn: the frame is the last one,
 //!   pixel for pixel, and says so ([`Damage::Unchanged`]), so the GIF compares nothing;
@@ -14,13 +14,14 @@
 //! - when more than half the canvas is marked, the whole frame is drawn, as [`Renderer::draw`]
 //!   does.
 //!
-//! Why the pixels are those of a whole redraw: a circle's pixels follow from its centre,
-//! radius and colour alone, so a ball whose record is equal to the bit draws what it drew.
-//! A pixel outside every marked tile lies under no circle that changed, so the same circles
-//! cover it, in the same order, as in the last frame; inside, it is drawn again from scratch.
+//! Why the pixels are those of a whole redraw: the pixels of a circle follow from its box of
+//! whole pixels and its colour alone ([`PixelBox`]), so a ball whose record is the same draws
+//! what it drew, however it moved below a pixel. A pixel outside every marked tile lies under
+//! no circle that changed, so the same circles cover it, in the same order, as in the last
+//! frame; inside, it is drawn again from scratch.
 
 use super::dirty::{paste, Rect, Tiles};
-use super::ellipse::{circle_box, fill_circle, fill_circle_within};
+use super::ellipse::{fill_box, PixelBox};
 use super::palette::{drawn_dots, IndexedFrame};
 use super::raster::Renderer;
 use crate::physics::ball::Ball;
@@ -47,6 +48,8 @@ pub struct Canvas {
     tiles: Tiles,
     /// The runs of marked tiles, drawn again in the last frame.
     runs: Vec<Rect>,
+    /// One ball's boxes, as it draws them now.
+    boxes: Vec<Option<PixelBox>>,
     change: Change,
 }
 
@@ -59,15 +62,17 @@ enum Change {
 }
 
 impl Canvas {
-    /// A canvas over `base` (the background and floors) for balls that draw at most
-    /// `most_dots` trail dots each.
-    pub(super) fn new(base: IndexedFrame, most_dots: impl Iterator<Item = usize>) -> Canvas {
+    /// A canvas for `renderer`'s scene, to draw frame after frame on.
+    pub fn new(renderer: &Renderer) -> Canvas {
+        let mut base = renderer.new_frame();
+        renderer.draw_background(&mut base);
         Canvas {
             frame: base.clone(),
             tiles: Tiles::new(base.width(), base.height()),
             base,
-            drawn: Drawn::new(most_dots),
+            drawn: Drawn::new(renderer.most_dots()),
             runs: Vec::new(),
+            boxes: Vec::new(),
             change: Change::Whole,
         }
     }
@@ -95,10 +100,7 @@ impl Canvas {
             Change::Whole => {
                 self.frame.copy_from_slice(&self.base);
                 tally_many(Work::PixelsDrawn, self.frame.len() as u64);
-                for circle in renderer.circles(balls) {
-                    let (x, y, radius) = (circle.x, circle.y, circle.radius);
-                    fill_circle(&mut self.frame, x, y, radius, circle.index);
-                }
+                renderer.draw_circles(balls, &mut self.frame);
             }
             Change::Runs => self.redraw_runs(renderer, balls),
         }
@@ -109,25 +111,33 @@ impl Canvas {
     /// circles of every ball that changed, until so much is marked that the whole frame
     /// is to be drawn.
     fn note_changes(&mut self, renderer: &Renderer, balls: &[Ball]) -> Change {
-        let fresh = !self.drawn.valid || balls.len() != self.drawn.balls.len();
+        let fresh = !self.drawn.valid || balls.len() != self.drawn.trails.len();
         let (mut whole, mut changed) = (fresh, fresh);
         self.drawn.valid = true;
-        for (i, ball) in balls.iter().enumerate() {
-            if !fresh && self.drawn.matches(i, ball) {
+        for (i, ball) in balls.iter().enumerate().take(self.drawn.trails.len()) {
+            let frame = &self.frame;
+            let circles = renderer
+                .trail_dots(i, ball)
+                .chain([renderer.ball_circle(i, ball)]);
+            let boxes = &mut self.boxes;
+            boxes.clear();
+            circles.for_each(|c| boxes.push(PixelBox::of(c.x, c.y, c.radius, frame)));
+            let trail = ball.trail.len();
+            if !fresh && self.drawn.matches(i, trail, &self.boxes) {
                 continue;
             }
             changed = true;
             if !whole {
-                self.mark(renderer, i);
+                self.mark(i);
             }
-            if !self.drawn.record(i, ball) {
+            if !self.drawn.record(i, trail, &self.boxes) {
                 // A trail longer than the scene said: this ball cannot be remembered, so
                 // every frame is drawn whole.
                 self.drawn.valid = false;
                 whole = true;
             }
             if !whole {
-                self.mark(renderer, i);
+                self.mark(i);
                 whole = self.tiles.mostly_marked();
             }
         }
@@ -139,15 +149,9 @@ impl Canvas {
     }
 
     /// Marks the tiles under every circle ball `i` drew as recorded.
-    fn mark(&mut self, renderer: &Renderer, i: usize) {
-        let ball = self.drawn.balls[i];
-        let points = self.drawn.points(i).iter().copied();
-        let dots = renderer.trail_dots(i, points, ball.trail, ball.radius);
-        let boxes =
-            dots.map(|dot| (dot.x, dot.y, dot.radius))
-                .chain([(ball.x, ball.y, ball.radius)]);
-        for (x, y, radius) in boxes {
-            if let Some(rect) = circle_box(x, y, radius, &self.frame) {
+    fn mark(&mut self, i: usize) {
+        for pixels in self.drawn.boxes(i).iter().flatten() {
+            if let Some(rect) = pixels.on(&self.frame) {
                 self.tiles.mark(rect);
             }
         }
@@ -161,39 +165,31 @@ impl Canvas {
             paste(&self.base, run, &mut self.frame);
             tally_many(Work::PixelsDrawn, run.area());
         }
-        for circle in renderer.circles(balls) {
-            let (x, y, radius) = (circle.x, circle.y, circle.radius);
-            let Some(rect) = circle_box(x, y, radius, &self.frame) else {
-                continue;
+        let (frame, tiles) = (&mut self.frame, &self.tiles);
+        renderer.circles(balls).for_each(|circle| {
+            let pixels = PixelBox::of(circle.x, circle.y, circle.radius, frame);
+            let Some((pixels, rect)) = pixels.and_then(|p| Some((p, p.on(frame)?))) else {
+                return;
             };
-            for clip in self.tiles.marked_runs(rect) {
-                fill_circle_within(&mut self.frame, x, y, radius, circle.index, clip);
+            for clip in tiles.marked_runs(rect) {
+                fill_box(frame, pixels, circle.index, clip);
             }
-        }
+        });
     }
 }
 
-/// What each ball drew in the last frame, to the bit: its centre and radius, how many points
-/// its trail held, and the points of the dots drawn (all but the newest).
+/// What each ball drew in the last frame: how many points its trail held (which, with a
+/// dot's place, picks its shade), and its circles' boxes of whole pixels (`None` for a
+/// circle that filled nothing).
 #[derive(Clone, Debug)]
 struct Drawn {
-    balls: Vec<DrawnBall>,
-    /// Each ball's dots, in a slot as long as the most it draws: ball `i`'s from `starts[i]`
-    /// up to `starts[i + 1]`.
-    points: Vec<(f64, f64)>,
+    trails: Vec<usize>,
+    /// Each ball's boxes, its dots then itself, in a slot as long as the most it draws:
+    /// ball `i`'s from `starts[i]` up to `starts[i + 1]`.
+    boxes: Vec<Option<PixelBox>>,
     starts: Vec<usize>,
     /// Whether the records are those of the frame: not before the first frame is drawn.
     valid: bool,
-}
-
-/// A ball as it was drawn.
-#[derive(Clone, Copy, Debug, Default)]
-struct DrawnBall {
-    x: f64,
-    y: f64,
-    radius: f64,
-    /// How many points its trail held.
-    trail: usize,
 }
 
 impl Drawn {
@@ -201,53 +197,37 @@ impl Drawn {
     fn new(most_dots: impl Iterator<Item = usize>) -> Drawn {
         let mut starts = vec![0];
         for dots in most_dots {
-            starts.push(starts[starts.len() - 1] + dots);
+            starts.push(starts[starts.len() - 1] + dots + 1);
         }
         let balls = starts.len() - 1;
         Drawn {
-            balls: vec![DrawnBall::default(); balls],
-            points: vec![(0.0, 0.0); starts[balls]],
+            trails: vec![0; balls],
+            boxes: vec![None; starts[balls]],
             starts,
             valid: false,
         }
     }
 
-    /// Ball `i`'s recorded dots.
-    fn points(&self, i: usize) -> &[(f64, f64)] {
-        let dots = drawn_dots(self.balls[i].trail).len();
-        &self.points[self.starts[i]..self.starts[i] + dots]
+    /// Ball `i`'s recorded boxes.
+    fn boxes(&self, i: usize) -> &[Option<PixelBox>] {
+        let circles = drawn_dots(self.trails[i]).len() + 1;
+        &self.boxes[self.starts[i]..self.starts[i] + circles]
     }
 
-    /// Whether `ball`, as ball `i`, draws exactly what ball `i` drew.
-    fn matches(&self, i: usize, ball: &Ball) -> bool {
-        let was = &self.balls[i];
-        let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
-        same(was.x, ball.x)
-            && same(was.y, ball.y)
-            && same(was.radius, ball.radius)
-            && was.trail == ball.trail.len()
-            && (self.points(i).iter())
-                .zip(ball.trail.iter())
-                .all(|(a, b)| same(a.0, b.0) && same(a.1, b.1))
+    /// Whether ball `i`, its trail holding `trail` points, draws `boxes` exactly as recorded.
+    fn matches(&self, i: usize, trail: usize, boxes: &[Option<PixelBox>]) -> bool {
+        self.trails[i] == trail && self.boxes(i) == boxes
     }
 
-    /// Records what `ball` draws as ball `i`; false if it does not fit its slot.
-    fn record(&mut self, i: usize, ball: &Ball) -> bool {
-        let n = ball.trail.len();
-        let dots = drawn_dots(n).len();
-        if i >= self.balls.len() || self.starts[i] + dots > self.starts[i + 1] {
+    /// Records that ball `i`, its trail holding `trail` points, draws `boxes`; false if they
+    /// do not fit its slot.
+    fn record(&mut self, i: usize, trail: usize, boxes: &[Option<PixelBox>]) -> bool {
+        let start = self.starts[i];
+        if start + boxes.len() > self.starts[i + 1] {
             return false;
         }
-        self.balls[i] = DrawnBall {
-            x: ball.x,
-            y: ball.y,
-            radius: ball.radius,
-            trail: n,
-        };
-        let slot = &mut self.points[self.starts[i]..self.starts[i] + dots];
-        for (point, &drawn) in slot.iter_mut().zip(ball.trail.iter()) {
-            *point = drawn;
-        }
+        self.trails[i] = trail;
+        self.boxes[start..start + boxes.len()].copy_from_slice(boxes);
         true
     }
 }
