@@ -4,7 +4,7 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use bouncing_ball::gif::encoder::{queue_frames, GifWriter};
-use bouncing_ball::render::Renderer;
+use bouncing_ball::render::{Canvas, Renderer};
 use bouncing_ball::scene::file as scene_file;
 
 /// The system allocator, counting every allocation.
@@ -38,7 +38,7 @@ fn drawing_and_encoding_frames_allocate_nothing_once_warmed_up() {
     let scene = scene_file::preset("elastic", 1).unwrap();
     let renderer = Renderer::new(&scene).unwrap();
     let mut simulation = scene.simulation();
-    let mut frame = renderer.new_frame();
+    let mut canvas = Canvas::new(&renderer);
     let mut gif = GifWriter::new(std::io::sink(), 320, 240, renderer.palette(), 30).unwrap();
     // Warm up for 10 queues' worth of frames, then count over the next 30 (960 frames).
     let (warm_up, counted) = (10 * queue_frames(320, 240), 30 * queue_frames(320, 240));
@@ -46,8 +46,8 @@ fn drawing_and_encoding_frames_allocate_nothing_once_warmed_up() {
     for n in 0..warm_up + counted {
         simulation.step();
         let before = allocations();
-        renderer.draw(simulation.balls(), &mut frame);
-        gif.write_frame(&frame).unwrap();
+        canvas.redraw(&renderer, simulation.balls());
+        gif.write_changes(canvas.frame(), canvas.damage()).unwrap();
         if n >= warm_up {
             during += allocations() - before;
         }
