@@ -1,0 +1,150 @@
+//! What a frame costs once nothing moves, against a frame of balls falling: a pile of
+//! 10,000 balls (radius 4 px, trail 4) dropped on a 1280×720 canvas, its frames drawn on a
+//! canvas that draws again only what changed and encoded into a GIF in memory.
+//!
+//! Three phases, each timed per frame, the physics apart from the drawing and encoding:
+//!
+//! - **falling**: the first frames, every ball moving;
+//! - **settling**: frames late in the run, the pile nearly still;
+//! - **at rest**: the last state drawn again and again unchanged, as balls that sleep leave
+//!   it (the physics of these frames is not run: what rest costs the solver is the solver's
+//!   business, see docs/contacts.md).
+//!
+//! Drawing and encoding are timed on the caller's thread (drawing, finding the changed
+//! rectangles, queueing); the compression on the encoding thread is timed apart, flushed at
+//! the end of each phase. Run: `cargo run --release -p bouncing_ball_bench --example
+//! rest_frames` (about a minute); with `-- --whole`, every frame is drawn whole and compared
+//! whole instead, as a run did before frames were drawn again only where they changed.
+
+use std::time::{Duration, Instant};
+
+use bouncing_ball::gif::GifWriter;
+use bouncing_ball::render::{Canvas, Damage, Renderer};
+use bouncing_ball::scene::file as scene_file;
+
+/// The pile preset on a bigger canvas, with more and smaller balls.
+const SCENE: &str = r#"
+width = 1280
+height = 720
+background = [0, 0, 0]
+frames = 1
+frame_ms = 30
+gravity = [0.0, 0.5]
+walls = { damping = 0.5 }
+ball_collisions = { restitution = 0.5 }
+iterations = 12
+
+[spawn]
+count = 10000
+radius = 4.0
+max_speed = 4.0
+trail = 4
+colours = [[255, 200, 60], [255, 90, 90], [120, 230, 120], [200, 120, 255]]
+trail_colours = [[60, 140, 255], [255, 150, 60], [60, 200, 200], [230, 90, 200]]
+"#;
+
+/// Frames of each phase, and the frames run (untimed) between falling and settling.
+const PHASE_FRAMES: u32 = 100;
+const BETWEEN: u32 = 300;
+
+/// One phase's time, summed over its frames, and how its frames were drawn.
+#[derive(Default)]
+struct Phase {
+    physics: Duration,
+    draw: Duration,
+    queue: Duration,
+    compress: Duration,
+    /// Frames unchanged, drawn again in areas, drawn whole.
+    kinds: [u32; 3],
+}
+
+fn main() -> std::io::Result<()> {
+    let whole = std::env::args().any(|a| a == "--whole");
+    let scene = scene_file::parse("rest_frames", SCENE, 1).map_err(std::io::Error::other)?;
+    let renderer = Renderer::new(&scene).map_err(std::io::Error::other)?;
+    let mut canvas = Canvas::new(&renderer);
+    let mut frame = renderer.new_frame();
+    let mut gif = GifWriter::new(Vec::new(), 1280, 720, renderer.palette(), 30)?;
+    let mut simulation = scene.simulation();
+    let mut phases: Vec<(&str, Phase)> = Vec::new();
+    for (name, frames, physics) in [
+        ("falling", PHASE_FRAMES, true),
+        ("(between)", BETWEEN, true),
+        ("settling", PHASE_FRAMES, true),
+        ("at rest", PHASE_FRAMES, false),
+    ] {
+        let mut phase = Phase::default();
+        let lzw_before = gif.timings().lzw;
+        for _ in 0..frames {
+            let t = Instant::now();
+            if physics {
+                simulation.step();
+            }
+            phase.physics += t.elapsed();
+            let (t, kind) = if whole {
+                let t = Instant::now();
+                renderer.draw(simulation.balls(), &mut frame);
+                phase.draw += t.elapsed();
+                let t = Instant::now();
+                gif.write_frame(&frame)?;
+                (t, 2)
+            } else {
+                let t = Instant::now();
+                canvas.redraw(&renderer, simulation.balls());
+                phase.draw += t.elapsed();
+                let t = Instant::now();
+                gif.write_changes(canvas.frame(), canvas.damage())?;
+                (t, kind(canvas.damage()))
+            };
+            phase.queue += t.elapsed();
+            phase.kinds[kind] += 1;
+        }
+        gif.flush()?;
+        phase.compress = gif.timings().lzw - lzw_before;
+        phases.push((name, phase));
+    }
+    print_table(&phases, whole);
+    Ok(())
+}
+
+/// Where a frame's kind is counted: unchanged, drawn again in areas, drawn whole.
+fn kind(damage: Damage) -> usize {
+    match damage {
+        Damage::Unchanged => 0,
+        Damage::Areas(_) => 1,
+        Damage::Whole => 2,
+    }
+}
+
+fn print_table(phases: &[(&str, Phase)], whole: bool) {
+    let ms = |d: Duration| d.as_secs_f64() * 1e3 / f64::from(PHASE_FRAMES);
+    let how = if whole {
+        "every frame drawn whole and compared whole"
+    } else {
+        "drawn again only where changed"
+    };
+    println!("10,000 balls on 1280x720, {how}; per frame (ms), {PHASE_FRAMES} frames a phase");
+    println!("| phase | physics | draw | find changes + queue | compress (encoding thread) | drawing + encoding | frames unchanged / in areas / whole |");
+    println!("|---|---:|---:|---:|---:|---:|---|");
+    for (name, p) in phases.iter().filter(|(name, _)| !name.starts_with('(')) {
+        let render = ms(p.draw) + ms(p.queue) + ms(p.compress);
+        println!(
+            "| {name} | {:.3} | {:.3} | {:.3} | {:.3} | {render:.3} | {} / {} / {} |",
+            ms(p.physics),
+            ms(p.draw),
+            ms(p.queue),
+            ms(p.compress),
+            p.kinds[0],
+            p.kinds[1],
+            p.kinds[2]
+        );
+    }
+    let cost = |name: &str| {
+        let (_, p) = phases.iter().find(|(n, _)| *n == name).expect("a phase");
+        ms(p.draw) + ms(p.queue) + ms(p.compress)
+    };
+    println!(
+        "\ndrawing + encoding at rest: {:.2} % of a falling frame's",
+        100.0 * cost("at rest") / cost("falling")
+    );
+}
