@@ -15,6 +15,7 @@ use std::mem::size_of;
 
 use crate::gif::encoder::queue_frames;
 use crate::physics::{Ball, Trail, Vec2};
+use crate::render::ellipse::PixelBox;
 use crate::scene::{BallSpec, Rgb, Scene};
 
 /// The memory a run may be predicted to need unless told otherwise, bytes (2 GiB).
@@ -34,9 +35,10 @@ pub const WARN_FRAME_MS: u32 = 20;
 /// What the program itself takes before any scene: code, stacks, the threads' arenas and
 /// their LZW coders (measured: 10 to 17 MB peak for the small presets).
 const BASE_BYTES: u64 = 20 << 20;
-/// Bytes per pixel of frame buffers outside the GIF queue: the frame being drawn, the frame
-/// the GIF shows, and at the end the RGB copy and the PNG being compressed.
-const FRAME_BYTES_PER_PIXEL: u64 = 6;
+/// Bytes per pixel of frame buffers outside the GIF queue: the frame being drawn, the
+/// background it is cleared to, the frame the GIF shows, and at the end the RGB copy and the
+/// PNG being compressed.
+const FRAME_BYTES_PER_PIXEL: u64 = 7;
 /// Bytes per queued GIF pixel: the cropped indices and their LZW codes (12-bit codes on
 /// 8-bit pixels are at most 1.5 bytes each).
 const QUEUED_BYTES_PER_PIXEL: f64 = 2.5;
@@ -150,7 +152,7 @@ fn memory_of(scene: &Scene) -> (u64, &'static str) {
     let balls = scene
         .balls
         .iter()
-        .map(|b| per_ball + contacts + Trail::heap_bytes(b.trail));
+        .map(|b| per_ball + contacts + Trail::heap_bytes(b.trail) + drawn_bytes(b.trail));
     let balls: u64 = balls.sum();
     let shades = shade_table_bytes(&scene.balls);
     let queued = queue_frames(scene.width, scene.height) as f64 * pixels as f64;
@@ -162,6 +164,13 @@ fn memory_of(scene: &Scene) -> (u64, &'static str) {
     ];
     let biggest = parts.iter().max_by_key(|p| p.0).map_or("", |p| p.1);
     (BASE_BYTES + balls + shades + frames, biggest)
+}
+
+/// What the canvas remembers of a ball with a trail of `trail` points, bytes: the pixel box
+/// of each circle it draws (its dots and itself), its trail's length and where its boxes start.
+fn drawn_bytes(trail: usize) -> u64 {
+    let circles = trail.saturating_sub(1) as u64 + 1;
+    circles * size_of::<PixelBox>() as u64 + 2 * size_of::<usize>() as u64
 }
 
 /// The renderer's shade tables: one per trail colour, as long as its longest trail needs.

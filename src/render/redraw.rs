@@ -49,7 +49,7 @@ pub struct Canvas {
     /// The runs of marked tiles, drawn again in the last frame.
     runs: Vec<Rect>,
     /// One ball's boxes, as it draws them now.
-    boxes: Vec<Option<PixelBox>>,
+    boxes: Vec<PixelBox>,
     change: Change,
 }
 
@@ -121,7 +121,10 @@ impl Canvas {
                 .chain([renderer.ball_circle(i, ball)]);
             let boxes = &mut self.boxes;
             boxes.clear();
-            circles.for_each(|c| boxes.push(PixelBox::of(c.x, c.y, c.radius, frame)));
+            circles.for_each(|c| {
+                let pixels = PixelBox::of(c.x, c.y, c.radius, frame);
+                boxes.push(pixels.unwrap_or(PixelBox::NOTHING));
+            });
             let trail = ball.trail.len();
             if !fresh && self.drawn.matches(i, trail, &self.boxes) {
                 continue;
@@ -150,7 +153,7 @@ impl Canvas {
 
     /// Marks the tiles under every circle ball `i` drew as recorded.
     fn mark(&mut self, i: usize) {
-        for pixels in self.drawn.boxes(i).iter().flatten() {
+        for pixels in self.drawn.boxes(i) {
             if let Some(rect) = pixels.on(&self.frame) {
                 self.tiles.mark(rect);
             }
@@ -179,14 +182,14 @@ impl Canvas {
 }
 
 /// What each ball drew in the last frame: how many points its trail held (which, with a
-/// dot's place, picks its shade), and its circles' boxes of whole pixels (`None` for a
-/// circle that filled nothing).
+/// dot's place, picks its shade), and its circles' boxes of whole pixels
+/// ([`PixelBox::NOTHING`] for a circle that filled nothing).
 #[derive(Clone, Debug)]
 struct Drawn {
     trails: Vec<usize>,
     /// Each ball's boxes, its dots then itself, in a slot as long as the most it draws:
     /// ball `i`'s from `starts[i]` up to `starts[i + 1]`.
-    boxes: Vec<Option<PixelBox>>,
+    boxes: Vec<PixelBox>,
     starts: Vec<usize>,
     /// Whether the records are those of the frame: not before the first frame is drawn.
     valid: bool,
@@ -202,26 +205,26 @@ impl Drawn {
         let balls = starts.len() - 1;
         Drawn {
             trails: vec![0; balls],
-            boxes: vec![None; starts[balls]],
+            boxes: vec![PixelBox::NOTHING; starts[balls]],
             starts,
             valid: false,
         }
     }
 
     /// Ball `i`'s recorded boxes.
-    fn boxes(&self, i: usize) -> &[Option<PixelBox>] {
+    fn boxes(&self, i: usize) -> &[PixelBox] {
         let circles = drawn_dots(self.trails[i]).len() + 1;
         &self.boxes[self.starts[i]..self.starts[i] + circles]
     }
 
     /// Whether ball `i`, its trail holding `trail` points, draws `boxes` exactly as recorded.
-    fn matches(&self, i: usize, trail: usize, boxes: &[Option<PixelBox>]) -> bool {
+    fn matches(&self, i: usize, trail: usize, boxes: &[PixelBox]) -> bool {
         self.trails[i] == trail && self.boxes(i) == boxes
     }
 
     /// Records that ball `i`, its trail holding `trail` points, draws `boxes`; false if they
     /// do not fit its slot.
-    fn record(&mut self, i: usize, trail: usize, boxes: &[Option<PixelBox>]) -> bool {
+    fn record(&mut self, i: usize, trail: usize, boxes: &[PixelBox]) -> bool {
         let start = self.starts[i];
         if start + boxes.len() > self.starts[i + 1] {
             return false;
