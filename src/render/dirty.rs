@@ -90,7 +90,7 @@ pub struct Tiles {
     columns: usize,
     rows: usize,
     marked: Vec<bool>,
-    /// The marked tiles' numbers (row-major), in the order they were marked.
+    /// The marked tiles' numbers (row-major), in the order they were marked: what to unmark.
     list: Vec<usize>,
 }
 
@@ -109,9 +109,11 @@ impl Tiles {
         }
     }
 
-    /// Whether more than half the canvas is marked: then redrawing all of it costs no more.
-    pub fn mostly_marked(&self) -> bool {
-        2 * self.list.len() > self.marked.len()
+    /// Whether more than a quarter of the canvas is marked. Drawing a run again costs more
+    /// per pixel than drawing the whole frame (each circle in it is cut to it, and a circle
+    /// across two runs is traced twice), so beyond this the whole frame is drawn.
+    pub fn much_marked(&self) -> bool {
+        4 * self.list.len() > self.marked.len()
     }
 
     /// Marks every tile `rect` (on the canvas) touches.
@@ -137,23 +139,15 @@ impl Tiles {
 
     /// The marked tiles as rectangles on the canvas, each a run of marked tiles along a row
     /// (written into `out`, cleared first).
-    pub fn runs(&mut self, out: &mut Vec<Rect>) {
+    pub fn runs(&self, out: &mut Vec<Rect>) {
         out.clear();
-        self.list.sort_unstable();
-        let mut tiles = self.list.iter().copied().peekable();
-        while let Some(first) = tiles.next() {
-            let mut last = first;
-            // A run continues while the next tile is its right neighbour in the same row.
-            while let Some(&next) = tiles.peek() {
-                if next != last + 1 || next % self.columns == 0 {
-                    break;
-                }
-                last = next;
-                tiles.next();
-            }
-            let row = first / self.columns;
-            out.push(self.rect(first % self.columns..last % self.columns + 1, row));
-        }
+        let everywhere = Rect {
+            left: 0,
+            top: 0,
+            width: self.width,
+            height: self.height,
+        };
+        out.extend(self.marked_runs(everywhere));
     }
 
     /// The marked runs of tiles `rect` touches, each as the rectangle of the canvas it covers:

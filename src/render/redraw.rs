@@ -8,11 +8,12 @@
 //! - if no ball would draw anything different, nothing is drawn: the frame is the last one,
 //!   pixel for pixel, and says so ([`Damage::Unchanged`]), so the GIF compares nothing;
 //! - otherwise the tiles ([`super::dirty::Tiles`]) under each changed ball's old and new
-//!   circles are marked. Each run of marked tiles is cleared to the background and floors,
+//!   rectangles (each holding all its circles) are marked. Each run of marked tiles is cleared to the background and floors,
 //!   and every circle touching it is drawn again, clipped to it, in the order a whole frame
 //!   is drawn (every trail, then every ball). The GIF compares only those runs;
-//! - when more than half the canvas is marked, the whole frame is drawn, as [`Renderer::draw`]
-//!   does.
+//! - when more than a quarter of the canvas is marked, the whole frame is drawn, as
+//!   [`Renderer::draw`] does, and the next few frames too without looking (a scene moving
+//!   all over, such as billiards, would pay for the looking and gain nothing).
 //!
 //! Why the pixels are those of a whole redraw: the pixels of a circle follow from its box of
 //! whole pixels and its colour alone ([`PixelBox`]), so a ball whose record is the same draws
@@ -51,7 +52,15 @@ pub struct Canvas {
     /// One ball's boxes, as it draws them now.
     boxes: Vec<PixelBox>,
     change: Change,
+    /// Frames still to draw whole without looking at what changed, and how many the last
+    /// busy spell drew ([`Canvas::busy`]).
+    busy: u32,
+    backoff: u32,
 }
+
+/// The most frames drawn whole in a row without looking at what changed: how late, at most,
+/// a scene that calms down is drawn only where it changes.
+pub const MOST_BUSY_FRAMES: u32 = 8;
 
 /// How the last frame was drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -74,6 +83,8 @@ impl Canvas {
             runs: Vec::new(),
             boxes: Vec::new(),
             change: Change::Whole,
+            busy: 0,
+            backoff: 0,
         }
     }
 
@@ -94,69 +105,88 @@ impl Canvas {
     /// Draws `balls` as `renderer` does, pixel for pixel, drawing again only what changed
     /// since the last frame (all of it the first time).
     pub fn redraw(&mut self, renderer: &Renderer, balls: &[Ball]) {
-        self.change = self.note_changes(renderer, balls);
+        self.change = match self.busy.checked_sub(1) {
+            Some(left) => {
+                self.busy = left;
+                Change::Whole
+            }
+            None => self.note_changes(renderer, balls),
+        };
         match self.change {
             Change::Unchanged => {}
-            Change::Whole => {
-                self.frame.copy_from_slice(&self.base);
-                tally_many(Work::PixelsDrawn, self.frame.len() as u64);
-                renderer.draw_circles(balls, &mut self.frame);
-            }
+            Change::Whole => renderer.draw(balls, &mut self.frame),
             Change::Runs => self.redraw_runs(renderer, balls),
         }
         self.tiles.clear();
     }
 
     /// Records what each of `balls` draws now, and marks the tiles under the old and new
-    /// circles of every ball that changed, until so much is marked that the whole frame
-    /// is to be drawn.
+    /// rectangles of every ball that changed, unless so much is marked that the whole frame
+    /// is to be drawn (then [`Canvas::busy`]).
     fn note_changes(&mut self, renderer: &Renderer, balls: &[Ball]) -> Change {
         let fresh = !self.drawn.valid || balls.len() != self.drawn.trails.len();
-        let (mut whole, mut changed) = (fresh, fresh);
         self.drawn.valid = true;
+        let mut changed = fresh;
         for (i, ball) in balls.iter().enumerate().take(self.drawn.trails.len()) {
-            let frame = &self.frame;
-            let circles = renderer
-                .trail_dots(i, ball)
-                .chain([renderer.ball_circle(i, ball)]);
-            let boxes = &mut self.boxes;
-            boxes.clear();
-            circles.for_each(|c| {
-                let pixels = PixelBox::of(c.x, c.y, c.radius, frame);
-                boxes.push(pixels.unwrap_or(PixelBox::NOTHING));
-            });
+            self.measure(renderer, i, ball);
             let trail = ball.trail.len();
             if !fresh && self.drawn.matches(i, trail, &self.boxes) {
                 continue;
             }
             changed = true;
-            if !whole {
+            if !fresh {
                 self.mark(i);
             }
             if !self.drawn.record(i, trail, &self.boxes) {
-                // A trail longer than the scene said: this ball cannot be remembered, so
-                // every frame is drawn whole.
-                self.drawn.valid = false;
-                whole = true;
+                // A trail longer than the scene said: the ball cannot be remembered.
+                return self.busy();
             }
-            if !whole {
+            if !fresh {
                 self.mark(i);
-                whole = self.tiles.mostly_marked();
+                if self.tiles.much_marked() {
+                    return self.busy();
+                }
             }
         }
-        match (changed, whole) {
-            (false, _) => Change::Unchanged,
-            (true, true) => Change::Whole,
-            (true, false) => Change::Runs,
+        if !changed {
+            self.backoff = 0;
+            return Change::Unchanged;
         }
+        if fresh {
+            return Change::Whole;
+        }
+        self.backoff = 0;
+        Change::Runs
     }
 
-    /// Marks the tiles under every circle ball `i` drew as recorded.
+    /// Puts the boxes of every circle ball `i`, `ball`, draws now in `self.boxes`.
+    fn measure(&mut self, renderer: &Renderer, i: usize, ball: &Ball) {
+        let frame = &self.frame;
+        let circles = (renderer.trail_dots(i, ball)).chain([renderer.ball_circle(i, ball)]);
+        let boxes = &mut self.boxes;
+        boxes.clear();
+        circles.for_each(|c| {
+            let pixels = PixelBox::of(c.x, c.y, c.radius, frame);
+            boxes.push(pixels.unwrap_or(PixelBox::NOTHING));
+        });
+    }
+
+    /// Much of the canvas changed: the whole frame is drawn, and so are the next few without
+    /// looking at what changed, twice as many each time in a row (up to [`MOST_BUSY_FRAMES`]),
+    /// so a scene that keeps moving all over pays for the looking only now and then. The
+    /// records go out of date, and the first frame after is recorded afresh.
+    fn busy(&mut self) -> Change {
+        self.drawn.valid = false;
+        self.backoff = (2 * self.backoff).clamp(1, MOST_BUSY_FRAMES);
+        self.busy = self.backoff;
+        Change::Whole
+    }
+
+    /// Marks the tiles under the rectangle holding every circle ball `i` drew as recorded.
     fn mark(&mut self, i: usize) {
-        for pixels in self.drawn.boxes(i) {
-            if let Some(rect) = pixels.on(&self.frame) {
-                self.tiles.mark(rect);
-            }
+        let on_canvas = self.drawn.boxes(i).iter().filter_map(|b| b.on(&self.frame));
+        if let Some(rect) = on_canvas.reduce(Rect::union) {
+            self.tiles.mark(rect);
         }
     }
 
