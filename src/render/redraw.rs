@@ -8,9 +8,10 @@
 //! - if no ball would draw anything different, nothing is drawn: the frame is the last one,
 //!   pixel for pixel, and says so ([`Damage::Unchanged`]), so the GIF compares nothing;
 //! - otherwise the tiles ([`super::dirty::Tiles`]) under each changed ball's old and new
-//!   rectangles (each holding all its circles) are marked. Each run of marked tiles is cleared to the background and floors,
-//!   and every circle touching it is drawn again, clipped to it, in the order a whole frame
-//!   is drawn (every trail, then every ball). The GIF compares only those runs;
+//!   rectangles (each holding all its circles) are marked. Each run of marked tiles is
+//!   cleared to the background and floors, and every circle touching it is drawn again,
+//!   clipped to it, in the order a whole frame is drawn (every trail, then every ball). The
+//!   GIF compares only those runs;
 //! - when more than a quarter of the canvas is marked, the whole frame is drawn, as
 //!   [`Renderer::draw`] does, and the next few frames too without looking (a scene moving
 //!   all over, such as billiards, would pay for the looking and gain nothing).
