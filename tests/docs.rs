@@ -88,3 +88,33 @@ fn the_gif_page_quotes_the_size_of_every_preset_gif_as_it_is() {
     }
     assert_eq!(checked, scene_file::PRESETS.len());
 }
+
+#[test]
+fn the_readme_and_help_save_completions_in_the_same_place() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let help = std::process::Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
+        .arg("--help")
+        .output()
+        .unwrap();
+    let help = String::from_utf8_lossy(&help.stdout);
+    // The command that saves the bash script, as each of them writes it.
+    let saving = |text: &str| -> Option<String> {
+        let start = text.find("bouncing_ball completions bash > ")?;
+        let rest = &text[start..];
+        Some(rest[..rest.find('`')?].to_string())
+    };
+    let (in_readme, in_help) = (saving(&readme), saving(&help));
+    assert!(
+        in_readme.is_some(),
+        "README.md does not say where to save the bash completions"
+    );
+    assert_eq!(
+        in_readme, in_help,
+        "README.md and --help give different places for the completion script"
+    );
+    assert!(
+        readme.contains("cargo install --path .") && help.contains("cargo install --path ."),
+        "README.md and --help must both say the completions are for an installed binary"
+    );
+}
