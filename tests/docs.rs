@@ -118,3 +118,69 @@ fn the_readme_and_help_save_completions_in_the_same_place() {
         "README.md and --help must both say the completions are for an installed binary"
     );
 }
+
+/// A time measured on some machine: `17.2 s`, `0.187 ms`, `60 ns`, `58,000 frames/s`. A table's
+/// unit column (`| 30 | ms |`, a setting) is not one: a time is a number and its unit together.
+fn quotes_a_timing(text: &str) -> bool {
+    let number = |w: &str| {
+        let w = w.trim_start_matches(['~', '≈', '<', '>', '(']);
+        w.starts_with(|c: char| c.is_ascii_digit())
+            && w.chars().all(|c| c.is_ascii_digit() || ".,–-".contains(c))
+    };
+    let unit = |w: &str| {
+        let w = w.trim_end_matches(['.', ',', ';', ':', ')']);
+        ["s", "ms", "µs", "us", "ns", "frames/s", "min"].contains(&w)
+    };
+    let glued = |w: &str| {
+        ["ms", "µs", "ns"].iter().any(|u| {
+            w.strip_suffix(u).is_some_and(|n| {
+                n.starts_with(|c: char| c.is_ascii_digit())
+                    && n.chars().all(|c| c.is_ascii_digit() || c == '.')
+            })
+        })
+    };
+    text.split('|').any(|cell| {
+        let words: Vec<&str> = cell.split_whitespace().collect();
+        // `0.187 ms`, `60ns`, or a column of them: `ns per ball-frame`.
+        words
+            .windows(2)
+            .any(|pair| (number(pair[0]) && unit(pair[1])) || (unit(pair[0]) && pair[1] == "per"))
+            || words.iter().any(|w| glued(w))
+    })
+}
+
+#[test]
+fn every_timing_in_the_docs_says_where_and_when_it_was_measured() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut pages = vec![root.join("README.md")];
+    for entry in std::fs::read_dir(root.join("docs")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "md") {
+            pages.push(path);
+        }
+    }
+    pages.sort();
+    let mut unmarked = Vec::new();
+    for page in pages {
+        let text = std::fs::read_to_string(&page).unwrap();
+        // A section runs from one heading to the next; its measurements are marked once in it.
+        for section in text.split("\n#") {
+            let flat = section.split_whitespace().collect::<Vec<_>>().join(" ");
+            let marked = flat.contains("Measured 20") || flat.contains("measured 20");
+            if quotes_a_timing(section) && !marked {
+                let heading = section.lines().next().unwrap_or("").trim_start_matches('#');
+                unmarked.push(format!(
+                    "{}: {}",
+                    page.file_name().unwrap().to_string_lossy(),
+                    heading.trim()
+                ));
+            }
+        }
+    }
+    assert!(
+        unmarked.is_empty(),
+        "these sections quote a time without saying when and where it was measured (write \
+         \"Measured YYYY-MM-DD on <machine>, load <L>\" in the section):\n{}",
+        unmarked.join("\n")
+    );
+}
