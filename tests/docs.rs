@@ -3,6 +3,8 @@
 
 use std::path::Path;
 
+mod common;
+
 use bouncing_ball::scene::file as scene_file;
 
 fn doc(name: &str) -> String {
@@ -183,4 +185,73 @@ fn every_timing_in_the_docs_says_where_and_when_it_was_measured() {
          \"Measured YYYY-MM-DD on <machine>, load <L>\" in the section):\n{}",
         unmarked.join("\n")
     );
+}
+
+#[test]
+fn the_readme_answers_the_reflection_questions_with_the_programs_numbers() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let readme = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    let quoted = |figure: String| {
+        assert!(
+            readme.contains(&figure),
+            "README.md should say `{figure}`, which is what the run gives now"
+        );
+    };
+    let list = |items: Vec<String>| items.join(", ");
+    // The frames where the ball leaves the floor (y 228) going up, and its speed then.
+    let bounces = |rows: &[[f64; 6]]| -> Vec<[f64; 6]> {
+        rows.windows(2)
+            .filter(|w| w[0][5] > 0.0 && w[1][5] < 0.0 && w[1][3] == 228.0)
+            .map(|w| w[1])
+            .collect()
+    };
+
+    // 1. The default scene's bounces, and where a long run settles.
+    let rows = common::lesson_trace(&[]);
+    let first = bounces(&rows);
+    quoted(
+        format!(
+            "the floor only {} times (frames {}) and leaves with vy = {} px/frame",
+            first.len(),
+            list(first.iter().map(|r| r[0].to_string()).collect()),
+            list(first.iter().map(|r| format!("{:.2}", r[5])).collect()),
+        )
+        .replace('-', "−"),
+    );
+    let long = common::lesson_trace(&["--frames", "2000"]);
+    let last_100 = &long[long.len() - 100..];
+    assert!(
+        last_100.iter().all(|r| r[3] == 228.0),
+        "README.md says y is 228 in every one of the last 100 frames of --frames 2000"
+    );
+    let settled = last_100.iter().map(|r| r[5]).fold(0.0, f64::min);
+    quoted(format!("vy settles at −e·g/(1 + e) = {:.3} px/frame", settled).replace('-', "−"));
+
+    // 2. A straight drop.
+    let drop = common::lesson_trace(&["--vx", "0", "--vy", "5.2"]);
+    assert!(
+        drop.iter().all(|r| r[2] == 40.0),
+        "x must stay 40 in a straight drop"
+    );
+    let hit = bounces(&drop)[0];
+    quoted(
+        format!(
+            "first hits the floor in frame {} (vy {:.2})",
+            hit[0], hit[5]
+        )
+        .replace('-', "−"),
+    );
+
+    // 3. How far the ball moves in a frame: the gap a trail one step behind would show.
+    let mut steps: Vec<f64> = rows
+        .windows(2)
+        .map(|w| (w[1][2] - w[0][2]).hypot(w[1][3] - w[0][3]))
+        .collect();
+    steps.sort_by(f64::total_cmp);
+    quoted(format!(
+        "{:.1} px on the median frame of the default scene and up to {:.0} px just after a bounce",
+        steps[steps.len() / 2],
+        steps[steps.len() - 1]
+    ));
 }

@@ -3,36 +3,8 @@
 
 mod common;
 
-use std::path::Path;
-use std::process::{Command, Output};
-
 use bouncing_ball::plot::record::Recording;
-use common::lesson_scene;
-
-fn run_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
-
-/// The `frame,ball,x,y,vx,vy` rows of a trace, as numbers.
-fn trace_rows(path: &Path) -> Vec<[f64; 6]> {
-    std::fs::read_to_string(path)
-        .unwrap()
-        .lines()
-        .skip(1)
-        .map(|line| {
-            let v: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
-            [v[0], v[1], v[2], v[3], v[4], v[5]]
-        })
-        .collect()
-}
+use common::{lesson_scene, lesson_trace, run_in, stderr, trace_rows};
 
 /// Every `<polyline>` of an SVG: its stroke colour and its points, px.
 fn polylines(svg: &str) -> Vec<(String, Vec<(f64, f64)>)> {
@@ -407,16 +379,6 @@ fn a_scene_file_can_ask_for_a_plot_and_the_flag_overrides_it() {
     );
     assert!(output.status.success(), "{}", stderr(&output));
     assert!(dir.path().join("flag.png").is_file());
-}
-
-/// The trace of the default scene with `extra` flags, run in a temporary folder.
-fn lesson_trace(extra: &[&str]) -> Vec<[f64; 6]> {
-    let dir = tempfile::tempdir().unwrap();
-    let mut args = vec!["-q", "--trace", "run.csv"];
-    args.extend_from_slice(extra);
-    let output = run_in(dir.path(), &args);
-    assert!(output.status.success(), "{}", stderr(&output));
-    trace_rows(&dir.path().join("run.csv"))
 }
 
 /// Energy per unit mass of the default scene's ball: kinetic plus g times its height above
