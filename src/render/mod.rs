@@ -6,6 +6,7 @@
 //! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
 //! - [`png`]: one frame as an RGB PNG.
 //! - [`text`]: labels in the plot's font, one palette colour, drawn into a frame.
+//! - [`tile`]: several runs' frames side by side, labelled, in one palette (a sweep).
 
 pub mod ellipse;
 pub mod line;
@@ -13,6 +14,7 @@ pub mod palette;
 pub mod png;
 pub mod raster;
 pub mod text;
+pub mod tile;
 
 pub use palette::IndexedFrame;
 pub use palette::Palette;
