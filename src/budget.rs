@@ -140,7 +140,7 @@ fn megabytes(bytes: u64) -> String {
 }
 
 /// The memory `scene` needs at most, bytes, and the part that dominates it, for the message.
-fn memory_of(scene: &Scene) -> (u64, &'static str) {
+pub fn memory_of(scene: &Scene) -> (u64, &'static str) {
     let pixels = u64::from(scene.width) * u64::from(scene.height);
     let per_ball = (size_of::<BallSpec>() + size_of::<Ball>()) as u64 + STYLE_BYTES_PER_BALL;
     let contacts = match scene.ball_collisions {
@@ -247,7 +247,7 @@ impl Estimate {
     }
 
     /// Refuses a scene predicted to take more time or GIF bytes than `budget` allows.
-    fn check_time_and_size(&self, budget: &Budget) -> Result<(), OverBudget> {
+    pub fn check_time_and_size(&self, budget: &Budget) -> Result<(), OverBudget> {
         if self.seconds > budget.seconds {
             return Err(OverBudget::Time {
                 needed: self.seconds,
