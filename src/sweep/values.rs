@@ -4,13 +4,20 @@
 use clap::error::{ContextKind, ContextValue};
 use clap::{Arg, Args, Command, FromArgMatches};
 
-use super::{Panel, SweepError};
+use super::error::SweepError;
 use crate::scene::{preset_names, Overrides, Scene, SceneFileError};
 
 /// The key that picks a preset rather than a setting.
 const PRESET: &str = "preset";
 /// Settings one GIF cannot vary: every panel shows its frames at the same pace.
 const FIXED: [&str; 1] = ["frame-ms"];
+
+/// One panel: its label and the scene it runs.
+#[derive(Clone, Debug)]
+pub struct Panel {
+    pub label: String,
+    pub scene: Scene,
+}
 
 /// A sweep as typed: the setting (as its flag is spelt, without `--`) and its values.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -67,7 +74,8 @@ impl Sweep {
         }
         if !keys().contains(&key) {
             let near = nearest_key(&key);
-            return Err(SweepError::UnknownKey { key, near });
+            let keys = keys().join(", ");
+            return Err(SweepError::UnknownKey { key, near, keys });
         }
         let values: Vec<String> = list.split(',').map(|v| v.trim().to_string()).collect();
         if values.iter().any(String::is_empty) {
