@@ -184,3 +184,35 @@ fn bad_sweeps_exit_2_with_one_line_saying_what_is_allowed_and_create_nothing() {
         assert!(left.is_empty(), "{args:?} left {left:?}");
     }
 }
+
+/// The README's sweep GIF and the flags that make it (docs/sweep.md says how to refresh it).
+const README_SWEEP: (&str, &[&str]) = (
+    "sweep-exercises.gif",
+    &[
+        "sweep",
+        "preset=elastic,no-gravity,heavy,moon",
+        "--frames",
+        "100",
+    ],
+);
+
+#[test]
+fn the_readmes_sweep_gif_is_what_its_command_writes() {
+    let (name, args) = README_SWEEP;
+    let dir = tempfile::tempdir().unwrap();
+    succeeds(dir.path(), &[args, &["-o", name, "-q"]].concat());
+    let fresh = std::fs::read(dir.path().join(name)).unwrap();
+    let committed = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("docs/img")
+        .join(name);
+    if std::env::var_os("UPDATE_GOLDEN").is_some() {
+        std::fs::write(&committed, &fresh).unwrap();
+        return;
+    }
+    assert!(
+        std::fs::read(&committed).ok() == Some(fresh),
+        "docs/img/{name} differs from what `bouncing_ball {}` writes now; if intended, refresh it \
+         with `UPDATE_GOLDEN=1 cargo test --release --test sweep`",
+        args.join(" ")
+    );
+}
