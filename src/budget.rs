@@ -140,7 +140,7 @@ fn megabytes(bytes: u64) -> String {
 }
 
 /// The memory `scene` needs at most, bytes, and the part that dominates it, for the message.
-pub fn memory_of(scene: &Scene) -> (u64, &'static str) {
+fn memory_of(scene: &Scene) -> (u64, &'static str) {
     let pixels = u64::from(scene.width) * u64::from(scene.height);
     let per_ball = (size_of::<BallSpec>() + size_of::<Ball>()) as u64 + STYLE_BYTES_PER_BALL;
     let contacts = match scene.ball_collisions {
@@ -207,6 +207,54 @@ impl Estimate {
         Ok(estimate)
     }
 
+    /// The cost of `panels` run side by side on one `width` × `height` canvas (a sweep), refused
+    /// if over `budget`: every panel's physics and drawing, and one GIF of the whole canvas,
+    /// whose changed rectangle spans the panels (taken as the whole canvas in every frame some
+    /// panel changes). Memory is checked first, from the scenes alone.
+    pub fn of_tiles(
+        panels: &[&Scene],
+        width: u32,
+        height: u32,
+        budget: &Budget,
+    ) -> Result<Estimate, OverBudget> {
+        let frames = panels.iter().map(|s| s.frames).max().unwrap_or(1);
+        let canvas = Scene {
+            frames,
+            ..Scene::empty(width, height)
+        };
+        let biggest = "the panels' runs and the tiled frames";
+        let scenes = || panels.iter().copied().chain([&canvas]);
+        let memory = scenes().map(|scene| memory_of(scene).0).sum();
+        if memory > budget.memory {
+            return Err(OverBudget::Memory {
+                needed: memory,
+                budget: budget.memory,
+                biggest,
+            });
+        }
+        // The panels' own changes, coded as the canvas's.
+        let mut activity = Activity::default();
+        for scene in panels {
+            activity.add(Activity::of(scene));
+        }
+        activity.changed_frames = activity.changed_frames.min(f64::from(frames));
+        activity.rect_pixels = activity.changed_frames * f64::from(width) * f64::from(height);
+        let parts = panels.iter().map(|scene| (*scene, Activity::default()));
+        let parts: Vec<Estimate> = parts
+            .chain([(&canvas, activity)])
+            .map(|(scene, activity)| Estimate::with_memory(scene, memory, biggest, activity))
+            .collect();
+        let estimate = Estimate {
+            memory,
+            frame_ns: parts.iter().map(|e| e.frame_ns).sum(),
+            seconds: parts.iter().map(|e| e.seconds).sum(),
+            gif_bytes: parts.iter().map(|e| e.gif_bytes).sum(),
+            biggest,
+        };
+        estimate.check_time_and_size(budget)?;
+        Ok(estimate)
+    }
+
     /// The time and GIF size of `scene` when its frames change as `activity` says, beside its
     /// memory.
     fn with_memory(
@@ -247,7 +295,7 @@ impl Estimate {
     }
 
     /// Refuses a scene predicted to take more time or GIF bytes than `budget` allows.
-    pub fn check_time_and_size(&self, budget: &Budget) -> Result<(), OverBudget> {
+    fn check_time_and_size(&self, budget: &Budget) -> Result<(), OverBudget> {
         if self.seconds > budget.seconds {
             return Err(OverBudget::Time {
                 needed: self.seconds,

@@ -165,6 +165,10 @@ fn bad_sweeps_exit_2_with_one_line_saying_what_is_allowed_and_create_nothing() {
             "--memory-budget",
         ),
         (
+            &["damping=0.5,0.7,0.88,1", "-n", "2000", "--time-budget", "1"],
+            "--time-budget",
+        ),
+        (
             &["damping=0.5,1", "-o", "s.png"],
             "give a name ending in .gif",
         ),

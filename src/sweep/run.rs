@@ -5,11 +5,11 @@ use std::io::{BufWriter, Write};
 use std::path::PathBuf;
 use std::time::Instant;
 
-use crate::budget::{memory_of, Budget, Estimate, OverBudget};
+use crate::budget::{Budget, Estimate};
 use crate::gif::GifWriter;
 use crate::output::{self, AtomicFile, Output, OutputError};
 use crate::progress::Progress;
-use crate::render::palette::IndexedFrame;
+use crate::render::palette::{IndexedFrame, Palette};
 use crate::render::raster::Renderer;
 use crate::render::tile::{PanelSpec, Tiling};
 use crate::render::write_png;
@@ -51,15 +51,8 @@ impl SweepOutputs {
 /// output file is left half-written and no existing file is changed.
 pub fn run(panels: &[Panel], outputs: &SweepOutputs) -> Result<Summary, SweepError> {
     let started = Instant::now();
-    for panel in panels {
-        panel.scene.validate().map_err(RunError::from)?;
-    }
+    let renderers = renderers(panels)?;
     let frame_ms = frame_time(panels)?;
-    let renderers = panels
-        .iter()
-        .map(|panel| Renderer::new(&panel.scene))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(RunError::from)?;
     let specs: Vec<PanelSpec> = panels
         .iter()
         .zip(&renderers)
@@ -71,13 +64,42 @@ pub fn run(panels: &[Panel], outputs: &SweepOutputs) -> Result<Summary, SweepErr
         })
         .collect();
     let tiling = Tiling::new(&specs)?;
+    let files = write(panels, &renderers, &tiling, frame_ms, outputs)?;
+    Ok(Summary {
+        frames: panels.iter().map(|p| p.scene.frames).max().unwrap_or(1),
+        files,
+        elapsed: started.elapsed(),
+    })
+}
+
+/// Each panel's renderer, once its scene is checked.
+fn renderers(panels: &[Panel]) -> Result<Vec<Renderer>, RunError> {
+    panels
+        .iter()
+        .map(|panel| {
+            panel.scene.validate()?;
+            Ok(Renderer::new(&panel.scene)?)
+        })
+        .collect()
+}
+
+/// Checks the budget and the output paths, then runs the panels into the GIF (and the
+/// still) and puts the files in place; returns each file written and its size.
+fn write(
+    panels: &[Panel],
+    renderers: &[Renderer],
+    tiling: &Tiling,
+    frame_ms: u32,
+    outputs: &SweepOutputs,
+) -> Result<Vec<(PathBuf, u64)>, RunError> {
     let frames = panels.iter().map(|p| p.scene.frames).max().unwrap_or(1);
-    let estimate = estimate(panels, &tiling, frames, &outputs.budget).map_err(RunError::from)?;
-    output::check(&outputs.list(), outputs.scene_file.as_deref()).map_err(RunError::from)?;
+    let (width, height) = tiling.size();
+    let scenes: Vec<&Scene> = panels.iter().map(|p| &p.scene).collect();
+    let estimate = Estimate::of_tiles(&scenes, width, height, &outputs.budget)?;
+    output::check(&outputs.list(), outputs.scene_file.as_deref())?;
     // Open every output first, so an unwritable folder fails before any work is done.
-    let mut gif_file = AtomicFile::create(&outputs.gif).map_err(RunError::from)?;
-    let mut png_file = outputs.png.as_deref().map(AtomicFile::create);
-    let mut png_file = png_file.take().transpose().map_err(RunError::from)?;
+    let mut gif_file = AtomicFile::create(&outputs.gif)?;
+    let mut png_file = outputs.png.as_deref().map(AtomicFile::create).transpose()?;
     if outputs.progress {
         for warning in estimate.warnings(&panels[0].scene) {
             eprintln!("warning: {warning}");
@@ -85,41 +107,38 @@ pub fn run(panels: &[Panel], outputs: &SweepOutputs) -> Result<Summary, SweepErr
     }
 
     let gif_error = OutputError::at(&outputs.gif);
-    let (width, height) = tiling.size();
-    let mut gif = GifWriter::new(
-        BufWriter::new(gif_file.file()),
-        width as u16,
-        height as u16,
-        tiling.palette(),
-        frame_ms,
-    )
-    .map_err(&gif_error)
-    .map_err(RunError::from)?;
-    let last = animate(panels, &renderers, &tiling, frames, outputs, &mut gif)?;
-    gif.send_queued()
-        .map_err(&gif_error)
-        .map_err(RunError::from)?;
+    let out = BufWriter::new(gif_file.file());
+    let palette = tiling.palette();
+    let mut gif =
+        GifWriter::new(out, width as u16, height as u16, palette, frame_ms).map_err(&gif_error)?;
+    let last = animate(panels, renderers, tiling, frames, outputs, &mut gif)?;
+    // The last frames are encoded while the still is written.
+    gif.send_queued().map_err(&gif_error)?;
     if let Some(file) = png_file.as_mut() {
-        let mut out = BufWriter::new(file.file());
-        write_png(&mut out, &last, tiling.palette())
-            .and_then(|()| out.flush())
-            .map_err(OutputError::at(&outputs.png.clone().unwrap_or_default()))
-            .map_err(RunError::from)?;
+        write_still(file, &last, palette)?;
     }
     gif.finish()
         .and_then(|mut out| out.flush())
-        .map_err(&gif_error)
-        .map_err(RunError::from)?;
+        .map_err(&gif_error)?;
 
+    // The last moment a signal stops the sweep; from here on the files go into place.
     stop_if_asked(outputs, frames, frames)?;
-    let files: Vec<AtomicFile> = std::iter::once(gif_file).chain(png_file).collect();
-    let sizes = output::commit_all(files).map_err(RunError::from)?;
+    let sizes = output::commit_all(std::iter::once(gif_file).chain(png_file).collect())?;
     let paths = outputs.list().into_iter().map(|o| o.path.to_path_buf());
-    Ok(Summary {
-        frames,
-        files: paths.zip(sizes).collect(),
-        elapsed: started.elapsed(),
-    })
+    Ok(paths.zip(sizes).collect())
+}
+
+/// Writes the last tiled frame as a PNG into `file`.
+fn write_still(
+    file: &mut AtomicFile,
+    frame: &IndexedFrame,
+    palette: &Palette,
+) -> Result<(), OutputError> {
+    let path = file.path().to_path_buf();
+    let mut out = BufWriter::new(file.file());
+    write_png(&mut out, frame, palette)
+        .and_then(|()| out.flush())
+        .map_err(OutputError::at(&path))
 }
 
 /// The one frame time every panel shares, ms.
@@ -173,41 +192,6 @@ fn animate<W: Write>(
         progress.frames_done(n + 1);
     }
     Ok(canvas)
-}
-
-/// What the sweep will cost: every panel's run, plus the tiled canvas's frames and GIF.
-/// Memory is checked first, from the scenes alone, before any pilot run of their physics.
-fn estimate(
-    panels: &[Panel],
-    tiling: &Tiling,
-    frames: u32,
-    budget: &Budget,
-) -> Result<Estimate, OverBudget> {
-    let (width, height) = tiling.size();
-    let canvas = Scene {
-        frames,
-        ..Scene::empty(width, height)
-    };
-    let scenes = || panels.iter().map(|p| &p.scene).chain([&canvas]);
-    let biggest = "the panels' runs and the tiled frames";
-    let memory: u64 = scenes().map(|scene| memory_of(scene).0).sum();
-    if memory > budget.memory {
-        return Err(OverBudget::Memory {
-            needed: memory,
-            budget: budget.memory,
-            biggest,
-        });
-    }
-    let parts: Vec<Estimate> = scenes().map(Estimate::of).collect();
-    let total = Estimate {
-        memory,
-        frame_ns: parts.iter().map(|e| e.frame_ns).sum(),
-        seconds: parts.iter().map(|e| e.seconds).sum(),
-        gif_bytes: parts.iter().map(|e| e.gif_bytes).sum(),
-        biggest,
-    };
-    total.check_time_and_size(budget)?;
-    Ok(total)
 }
 
 /// Returns `Stopped` if a signal has come.
