@@ -223,8 +223,14 @@ impl Estimate {
             ..Scene::empty(width, height)
         };
         let biggest = "the panels' runs and the tiled frames";
-        let scenes = || panels.iter().copied().chain([&canvas]);
-        let memory = scenes().map(|scene| memory_of(scene).0).sum();
+        // Each panel: its balls, trails and shades, and the one frame it is drawn into; the
+        // program itself, the GIF's queue and the still are the canvas's.
+        let panel_memory = |scene: &Scene| {
+            let frame = u64::from(scene.width) * u64::from(scene.height);
+            let bare = memory_of(&Scene::empty(scene.width, scene.height)).0;
+            memory_of(scene).0.saturating_sub(bare) + frame
+        };
+        let memory = memory_of(&canvas).0 + panels.iter().map(|s| panel_memory(s)).sum::<u64>();
         if memory > budget.memory {
             return Err(OverBudget::Memory {
                 needed: memory,
