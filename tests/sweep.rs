@@ -220,3 +220,50 @@ fn the_readmes_sweep_gif_is_what_its_command_writes() {
         args.join(" ")
     );
 }
+
+#[test]
+fn ctrl_c_stops_a_long_sweep_leaving_no_temp_file_and_an_earlier_gif_as_it_was() {
+    use common::process::{args, send, spawn, Request};
+    use std::time::{Duration, Instant};
+    let (name, code) = Request::Interrupt.expected();
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("s.gif"), b"an earlier GIF").unwrap();
+    let list = [
+        "sweep",
+        "damping=0.5,1",
+        "-n",
+        "100000",
+        "-o",
+        "s.gif",
+        "--png",
+        "s.png",
+    ];
+    let mut child = spawn(dir.path(), &args(&[&list[..], &["-q"]].concat()), 3 << 30);
+    child.stdout = None;
+    let entries = || -> Vec<String> {
+        let names = std::fs::read_dir(dir.path()).unwrap();
+        let names = names.map(|e| e.unwrap().file_name().to_string_lossy().into_owned());
+        names.collect()
+    };
+    let started = Instant::now();
+    while entries().iter().filter(|n| n.ends_with(".tmp")).count() < 2 {
+        assert!(
+            started.elapsed() < Duration::from_secs(20),
+            "no temporary files appeared"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(300)); // some frames into the sweep
+    send(&child, Request::Interrupt);
+    let output = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(code), "{name}: {stderr}");
+    assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
+    assert!(
+        stderr.contains(&format!("stopped by {name}")) && stderr.contains("s.gif, s.png"),
+        "{stderr}"
+    );
+    assert_eq!(entries(), ["s.gif"], "only the earlier GIF is left");
+    let earlier = std::fs::read(dir.path().join("s.gif")).unwrap();
+    assert_eq!(earlier, b"an earlier GIF");
+}
