@@ -237,7 +237,8 @@ impl SceneArgs {
 
 /// The command line, its scene settings showing the lesson's values as their defaults.
 fn command() -> clap::Command {
-    Overrides::defaults_from(&lesson_scene(), Args::command())
+    let defaults = |command| Overrides::defaults_from(&lesson_scene(), command);
+    defaults(Args::command()).mut_subcommand("sweep", defaults)
 }
 
 /// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
