@@ -13,7 +13,8 @@
 //! At the top, [`run`] ties them together for the command line, [`budget`] works out before
 //! the first frame what a scene will cost, [`output`] makes files appear whole or not at all
 //! and only where a file belongs, [`stop`] ends a run cleanly on a signal, [`trace`] writes
-//! the CSV and [`progress`] shows how far a long run is.
+//! the CSV and [`progress`] shows how far a long run is. [`sweep`] runs a scene once per value of
+//! one setting and tiles the runs into one GIF.
 
 pub mod budget;
 pub mod gif;
@@ -25,6 +26,7 @@ pub mod render;
 pub mod run;
 pub mod scene;
 pub mod stop;
+pub mod sweep;
 pub mod trace;
 
 pub use run::{run, Outputs, RunError, Summary};

@@ -13,6 +13,7 @@ use bouncing_ball::scene::{
     self, preset_names, InvalidValue, Overrides, SceneFileError, TrailFade,
 };
 use bouncing_ball::stop::Stop;
+use bouncing_ball::sweep::{self, Change, Sweep, SweepError, SweepOutputs};
 use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene, Summary};
 use clap::{ArgAction, CommandFactory, FromArgMatches, Parser, Subcommand};
 use clap_complete::Shell;
@@ -89,6 +90,20 @@ struct Args {
     /// Also draw height, speed and energy per frame (SVG; PNG if PATH ends in .png)
     #[arg(long, value_name = "PATH")]
     plot: Option<PathBuf>,
+    #[command(flatten)]
+    budget: BudgetArgs,
+    /// Print nothing on success
+    #[arg(short, long)]
+    quiet: bool,
+    /// Print help
+    #[arg(short, long, action = ArgAction::HelpShort)]
+    help: Option<bool>,
+}
+
+/// What a run may be predicted to need before it is refused (the main command's and every
+/// subcommand that runs a scene).
+#[derive(clap::Args, Debug)]
+struct BudgetArgs {
     /// Refuse a scene predicted to need more memory than this, MB
     #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_BUDGET >> 20,
           value_parser = whole_number, allow_hyphen_values = true)]
@@ -101,17 +116,21 @@ struct Args {
     #[arg(long, value_name = "MB", default_value_t = DEFAULT_GIF_BUDGET >> 20,
           value_parser = whole_number, allow_hyphen_values = true)]
     gif_budget: u64,
-    /// Print nothing on success
-    #[arg(short, long)]
-    quiet: bool,
-    /// Print help
-    #[arg(short, long, action = ArgAction::HelpShort)]
-    help: Option<bool>,
+}
+
+impl BudgetArgs {
+    fn budget(&self) -> Budget {
+        Budget {
+            memory: self.memory_budget.saturating_mul(1 << 20),
+            seconds: self.time_budget as f64,
+            gif_bytes: self.gif_budget.saturating_mul(1 << 20),
+        }
+    }
 }
 
 /// What to simulate: a scene file, a preset or the lesson's scene, and the flags laid over it
 /// (the main command's, and every subcommand that runs a scene).
-#[derive(clap::Args, Debug)]
+#[derive(clap::Args, Clone, Debug)]
 struct SceneArgs {
     /// Load the scene from a TOML file (- for standard input)
     #[arg(short, long, conflicts_with = "preset")]
@@ -133,6 +152,29 @@ enum Command {
     Completions {
         /// The shell to complete for
         shell: Shell,
+    },
+    /// Run the scene once per value of one setting, side by side in one GIF, e.g. `bouncing_ball sweep damping=0.5,0.7,0.88,1` (docs/sweep.md)
+    Sweep {
+        /// The setting to vary and its values: a flag's name without -- (or preset), =, values separated by commas
+        #[arg(value_name = "KEY=V1,V2,...")]
+        values: String,
+        // Boxed: the scene's flags are most of the command line's size.
+        #[command(flatten)]
+        scene: Box<SceneArgs>,
+        /// Where to write the tiled GIF
+        #[arg(short = 'o', long, default_value = "sweep.gif")]
+        gif: PathBuf,
+        /// Also write the last tiled frame as a PNG
+        #[arg(long)]
+        png: Option<PathBuf>,
+        #[command(flatten)]
+        budget: BudgetArgs,
+        /// Print nothing on success
+        #[arg(short, long)]
+        quiet: bool,
+        /// Print help
+        #[arg(short, long, action = ArgAction::Help)]
+        help: Option<bool>,
     },
 }
 
@@ -176,11 +218,27 @@ impl SceneArgs {
         self.settings.apply(&mut scene);
         Ok(scene)
     }
+
+    /// The scene with a sweep's change laid over it, as if it had been typed too.
+    fn changed(&self, change: &Change) -> Result<Scene, SceneFileError> {
+        let args = match change {
+            Change::Preset(name) => SceneArgs {
+                preset: Some(name.clone()),
+                ..self.clone()
+            },
+            Change::Setting(setting) => SceneArgs {
+                settings: setting.or(&self.settings),
+                ..self.clone()
+            },
+        };
+        args.scene()
+    }
 }
 
 /// The command line, its scene settings showing the lesson's values as their defaults.
 fn command() -> clap::Command {
-    Overrides::defaults_from(&lesson_scene(), Args::command())
+    let defaults = |command| Overrides::defaults_from(&lesson_scene(), command);
+    defaults(Args::command()).mut_subcommand("sweep", defaults)
 }
 
 /// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
@@ -307,14 +365,32 @@ fn main() -> ExitCode {
         Ok(args) => args,
         Err(error) => return refuse(error),
     };
-    if let Some(Command::Completions { shell }) = args.command {
-        clap_complete::generate(
-            shell,
-            &mut command(),
-            "bouncing_ball",
-            &mut std::io::stdout(),
-        );
-        return ExitCode::SUCCESS;
+    match args.command {
+        Some(Command::Completions { shell }) => {
+            let mut out = std::io::stdout();
+            clap_complete::generate(shell, &mut command(), "bouncing_ball", &mut out);
+            return ExitCode::SUCCESS;
+        }
+        Some(Command::Sweep {
+            values,
+            scene,
+            gif,
+            png,
+            budget,
+            quiet,
+            ..
+        }) => {
+            let outputs = SweepOutputs {
+                gif,
+                png,
+                progress: !quiet,
+                scene_file: scene.scene.clone(),
+                budget: budget.budget(),
+                stop,
+            };
+            return run_sweep(&values, &scene, &outputs);
+        }
+        None => {}
     }
     let scene = match args.scene.scene() {
         Ok(scene) => scene,
@@ -328,11 +404,7 @@ fn main() -> ExitCode {
         plot: args.plot.clone().or_else(|| scene.plot.clone()),
         progress: !args.quiet,
         scene_file: args.scene.scene.clone(),
-        budget: Budget {
-            memory: args.memory_budget.saturating_mul(1 << 20),
-            seconds: args.time_budget as f64,
-            gif_bytes: args.gif_budget.saturating_mul(1 << 20),
-        },
+        budget: args.budget.budget(),
         stop,
         ..Outputs::new(&args.gif, &args.png)
     };
@@ -349,18 +421,60 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
+        Err(error) => fail(&error, |name| match name {
+            "plot" => args.plot.is_some(),
+            setting => args.scene.settings.is_typed(setting),
+        }),
+    }
+}
+
+/// A run's error in one line; a value the scene cannot take is named as the user knows it
+/// (`typed` says which settings they typed).
+fn fail(error: &RunError, typed: impl Fn(&str) -> bool) -> ExitCode {
+    match error {
+        RunError::Invalid(bad) => eprintln!("error: {}", refuse_value(bad, typed)),
+        other => eprintln!("error: {other}"),
+    }
+    ExitCode::from(error.exit_code())
+}
+
+/// `sweep KEY=V1,V2,...`: the scene once per value, as if each were typed, tiled into one GIF.
+fn run_sweep(values: &str, args: &SceneArgs, outputs: &SweepOutputs) -> ExitCode {
+    let typed = |name: &str| match name {
+        "preset" => args.preset.is_some() || args.scene.is_some(),
+        setting => args.settings.is_typed(setting),
+    };
+    let sweep = match Sweep::parse(values) {
+        Ok(sweep) => sweep,
         Err(error) => {
-            match &error {
-                RunError::Invalid(bad) => {
-                    let typed = |name: &str| match name {
-                        "plot" => args.plot.is_some(),
-                        setting => args.scene.settings.is_typed(setting),
-                    };
-                    eprintln!("error: {}", refuse_value(bad, typed))
-                }
-                other => eprintln!("error: {other}"),
+            eprintln!("error: {error}");
+            return ExitCode::from(2);
+        }
+    };
+    if args
+        .scene
+        .as_deref()
+        .is_some_and(bouncing_ball::output::is_stdout)
+    {
+        eprintln!("error: --scene -: a sweep reads its scene once per panel; give a file, not standard input");
+        return ExitCode::from(2);
+    }
+    let result = sweep
+        .panels(typed, |change| args.changed(change))
+        .and_then(|panels| sweep::run(&panels, outputs));
+    match result {
+        Ok(summary) => {
+            if outputs.progress {
+                // Standard output may be a closed pipe: never fail on it.
+                let _ = writeln!(std::io::stdout(), "{}", summary_line(&summary));
             }
-            ExitCode::from(error.exit_code())
+            ExitCode::SUCCESS
+        }
+        Err(SweepError::Flag(error)) => refuse(error),
+        Err(SweepError::Run(error)) => fail(&error, |name| name == sweep.setting() || typed(name)),
+        Err(other) => {
+            eprintln!("error: {other}");
+            ExitCode::from(other.exit_code())
         }
     }
 }
