@@ -5,12 +5,14 @@
 //! - [`line`]: one-pixel floor segments.
 //! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
 //! - [`png`]: one frame as an RGB PNG.
+//! - [`text`]: labels in the plot's font, one palette colour, drawn into a frame.
 
 pub mod ellipse;
 pub mod line;
 pub mod palette;
 pub mod png;
 pub mod raster;
+pub mod text;
 
 pub use palette::IndexedFrame;
 pub use palette::Palette;
