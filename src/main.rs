@@ -13,7 +13,7 @@ use bouncing_ball::scene::{
     self, preset_names, InvalidValue, Overrides, SceneFileError, TrailFade,
 };
 use bouncing_ball::stop::Stop;
-use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene, Summary};
+use bouncing_ball::{compare, run, BallSpec, Outputs, RunError, Scene, Summary};
 use clap::{ArgAction, CommandFactory, FromArgMatches, Parser, Subcommand};
 use clap_complete::Shell;
 
@@ -129,11 +129,40 @@ struct SceneArgs {
 
 #[derive(Subcommand, Debug)]
 enum Command {
+    /// Run the scene with several methods side by side, each measured against a reference: a GIF of them together, a table of time, error and energy, and optionally a work-precision plot
+    Compare(Box<CompareArgs>),
     /// Print a shell completion script, for an installed binary (`cargo install --path .`), e.g. `bouncing_ball completions bash > ~/.local/share/bash-completion/completions/bouncing_ball`
     Completions {
         /// The shell to complete for
         shell: Shell,
     },
+}
+
+/// `compare`: the scene as the main command takes it, the methods, and where the results go.
+#[derive(clap::Args, Debug)]
+struct CompareArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// The methods, each INTEGRATOR:SUBSTEPS:COLLISIONS (names as --integrator and
+    /// --collisions spell them), separated by commas
+    #[arg(long, value_name = "LIST", default_value = compare::methods::DEFAULT_METHODS,
+          value_parser = compare::methods::parse_list)]
+    methods: compare::methods::MethodList,
+    /// Where to write the animated GIF of all methods together
+    #[arg(short = 'o', long, default_value = "compare.gif")]
+    gif: PathBuf,
+    /// Where to write the still PNG (the last frame)
+    #[arg(long, default_value = "compare.png")]
+    png: PathBuf,
+    /// Also write the table as CSV
+    #[arg(long, value_name = "PATH")]
+    table: Option<PathBuf>,
+    /// Also draw error against time per ball-frame, log-log (SVG; PNG if PATH ends in .png)
+    #[arg(long, value_name = "PATH")]
+    plot: Option<PathBuf>,
+    /// Print nothing on success
+    #[arg(short, long)]
+    quiet: bool,
 }
 
 /// The lesson's scene, from the constants at the top of this file.
@@ -180,7 +209,9 @@ impl SceneArgs {
 
 /// The command line, its scene settings showing the lesson's values as their defaults.
 fn command() -> clap::Command {
-    Overrides::defaults_from(&lesson_scene(), Args::command())
+    let lesson = lesson_scene();
+    Overrides::defaults_from(&lesson, Args::command())
+        .mut_subcommand("compare", |c| Overrides::defaults_from(&lesson, c))
 }
 
 /// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
@@ -316,6 +347,9 @@ fn main() -> ExitCode {
         );
         return ExitCode::SUCCESS;
     }
+    if let Some(Command::Compare(compare)) = args.command {
+        return compare_methods(compare, stop);
+    }
     let scene = match args.scene.scene() {
         Ok(scene) => scene,
         Err(error) => {
@@ -346,6 +380,50 @@ fn main() -> ExitCode {
                 } else {
                     writeln!(std::io::stdout(), "{line}")
                 };
+            }
+            ExitCode::SUCCESS
+        }
+        Err(error) => {
+            match &error {
+                RunError::Invalid(bad) => {
+                    let typed = |name: &str| match name {
+                        "plot" => args.plot.is_some(),
+                        setting => args.scene.settings.is_typed(setting),
+                    };
+                    eprintln!("error: {}", refuse_value(bad, typed))
+                }
+                other => eprintln!("error: {other}"),
+            }
+            ExitCode::from(error.exit_code())
+        }
+    }
+}
+
+/// `compare`: runs the scene by every method, prints the table and what was written.
+fn compare_methods(args: Box<CompareArgs>, stop: Stop) -> ExitCode {
+    let scene = match args.scene.scene() {
+        Ok(scene) => scene,
+        Err(error) => {
+            eprintln!("error: {error}");
+            return ExitCode::from(2);
+        }
+    };
+    let outputs = compare::CompareOutputs {
+        methods: args.methods.clone(),
+        gif: args.gif.clone(),
+        png: args.png.clone(),
+        table: args.table.clone(),
+        plot: args.plot.clone(),
+        scene_file: args.scene.scene.clone(),
+        budget: Budget::default(),
+        stop,
+    };
+    match compare::compare(&scene, &outputs) {
+        Ok(done) => {
+            if !args.quiet {
+                let line = summary_line(&done.summary);
+                // A closed pipe (`| head`) is no reason to fail once the files are written.
+                let _ = writeln!(std::io::stdout(), "{}{line}", done.table);
             }
             ExitCode::SUCCESS
         }
