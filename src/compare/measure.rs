@@ -90,6 +90,16 @@ pub fn time_all(scene: &Scene, methods: &[Method]) -> Vec<Timing> {
         .collect()
 }
 
+/// One method's results.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    pub method: Method,
+    pub timing: Timing,
+    pub stray: Stray,
+    /// See [`super::table`]'s note under the table; `None` when the scene starts with no energy.
+    pub energy_drift: Option<f64>,
+}
+
 /// A scene's mechanical energy: kinetic `Σ ½·m·|v|²` plus potential `Σ m·g·h`, with the
 /// masses of collisions (m ∝ r²) and the plot's heights (how far each ball could still fall).
 pub struct Energy {

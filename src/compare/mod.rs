@@ -2,6 +2,7 @@
 //! measured against a reference, so a learner sees on their own scene what accuracy costs.
 //!
 //! - [`methods`]: the methods, as `--methods` spells them (`rk4:4:exact`).
+//! - [`checks`]: what stops a comparison midway (a signal, numbers beyond the finite).
 //! - [`reference`]: what every method is measured against, and how far it converged.
 //! - [`measure`]: the time per ball-frame, the error against the reference, the energy.
 //! - [`draw`]: the GIF's frames: every method in its colour, the reference as outlines, the
@@ -13,6 +14,7 @@
 //! beside its target and renames them into place only at the end. The GIF holds no timing,
 //! so it is the same bytes on every run; the table and the plot hold the timings.
 
+pub mod checks;
 pub mod draw;
 pub mod measure;
 pub mod methods;
@@ -34,8 +36,9 @@ use crate::run::{RunError, Summary};
 use crate::scene::{InvalidValue, Scene};
 use crate::stop::Stop;
 
+use checks::{balls_and_frames, check_finite, stop_if_asked};
 use draw::{LegendRow, Picture};
-use measure::{Energy, Stray, Timing};
+use measure::{Energy, Outcome, Stray};
 use methods::Method;
 use reference::Reference;
 
@@ -76,16 +79,6 @@ impl CompareOutputs {
         }
         list
     }
-}
-
-/// One method's results.
-#[derive(Clone, Debug)]
-pub struct Outcome {
-    pub method: Method,
-    pub timing: Timing,
-    pub stray: Stray,
-    /// See [`table`]'s note under the table; `None` when the scene starts with no energy.
-    pub energy_drift: Option<f64>,
 }
 
 /// What a comparison found and wrote.
@@ -183,13 +176,6 @@ pub fn compare(scene: &Scene, outputs: &CompareOutputs) -> Result<Comparison, Ru
             elapsed: started.elapsed(),
         },
     })
-}
-
-/// `1 ball, 200 frames`.
-fn balls_and_frames(scene: &Scene) -> String {
-    let balls = scene.balls.len();
-    let s = if balls == 1 { "" } else { "s" };
-    format!("{balls} ball{s}, {} frames", scene.frames)
 }
 
 /// `scene` without trails: what the reference and the timings run (trails are drawing).
@@ -326,33 +312,4 @@ impl Files {
             .chain(self.plot);
         output::commit_all(files.collect())
     }
-}
-
-/// Returns `Stopped` if a signal has come.
-fn stop_if_asked(stop: &Stop, frame: u32, frames: u32) -> Result<(), RunError> {
-    match stop.requested() {
-        Some(signal) => Err(RunError::Stopped {
-            signal,
-            frame,
-            frames,
-            unwritten: "any of the comparison's files".to_string(),
-        }),
-        None => Ok(()),
-    }
-}
-
-/// Refuses balls that left the finite numbers, so no NaN is measured or drawn.
-fn check_finite(scene: &Scene, method: Method, balls: &[Ball], frame: u32) -> Result<(), RunError> {
-    let Some((ball, state)) = balls.iter().enumerate().find(|(_, b)| !b.is_finite()) else {
-        return Ok(());
-    };
-    Err(RunError::NonFinite {
-        ball,
-        frame,
-        state: format!(
-            "x {:?}, y {:?}, vx {:?}, vy {:?}",
-            state.x, state.y, state.vx, state.vy
-        ),
-        inputs: format!("{} solved by {method}", balls_and_frames(scene)),
-    })
 }

@@ -13,8 +13,8 @@ use crate::physics::maths;
 use crate::plot::{use_embedded_font, write_png, Format};
 
 use super::draw::COLOURS;
+use super::measure::Outcome;
 use super::methods::LESSON;
-use super::Outcome;
 
 /// The picture's size, px.
 const SIZE: (u32, u32) = (800, 560);

@@ -9,9 +9,9 @@ use crate::physics::{Ball, CollisionMode, Integrator, Vec2};
 use crate::scene::spec::MAX_SUBSTEPS;
 use crate::scene::Scene;
 
+use super::checks::{check_finite, stop_if_asked};
 use super::methods::Method;
 use super::table::short;
-use super::{check_finite, stop_if_asked};
 use crate::run::RunError;
 use crate::stop::Stop;
 

@@ -4,7 +4,7 @@
 
 use std::io::{self, Write};
 
-use super::Outcome;
+use super::measure::Outcome;
 
 /// The CSV's columns; a value the scene makes meaningless is left empty (the position error
 /// of colliding balls, which part chaotically; a parting that never happened).
