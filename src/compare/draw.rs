@@ -62,11 +62,12 @@ fn outline_colour(background: Rgb) -> Rgb {
 }
 
 /// The scene as the renderer should see it: every method's copy of every ball in the
-/// method's colour, and one last ball that is never drawn, so the palette holds the
+/// method's colour, the last method first so the first listed (the lesson's, by default) is
+/// drawn on top, and one last ball that is never drawn, so the palette holds the
 /// outline's colour too (and leaves room for it when trails are dimmed to fit).
 fn drawn_scene(scene: &Scene, methods: usize) -> Scene {
     let mut balls = Vec::with_capacity(methods * scene.balls.len() + 1);
-    for colour in &COLOURS[..methods] {
+    for colour in COLOURS[..methods].iter().rev() {
         balls.extend(scene.balls.iter().map(|spec| BallSpec {
             colour: *colour,
             trail_colour: *colour,
@@ -150,11 +151,11 @@ impl Picture {
         &self.frame
     }
 
-    /// Draws one frame: each method's `balls` (in `--methods` order), the reference's
+    /// Draws one frame: each method's `balls` (in `--methods` order; the first on top), the reference's
     /// `centres` as outlines of the balls' radii, and the `legend`, one row per method.
     pub fn draw(&mut self, methods: &[&[Ball]], centres: &[Vec2], legend: &[LegendRow]) {
         self.balls.clear();
-        for balls in methods {
+        for balls in methods.iter().rev() {
             self.balls.extend(balls.iter().cloned());
         }
         self.renderer.draw(&self.balls, &mut self.canvas);
