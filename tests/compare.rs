@@ -398,3 +398,25 @@ fn a_refused_output_leaves_nothing_behind() {
         assert!(files.is_empty(), "{args:?} left files behind: {files:?}");
     }
 }
+
+#[test]
+fn the_readme_gif_is_what_its_command_draws() {
+    // docs/compare.md gives the command; `UPDATE_GOLDEN=1` rewrites the committed GIF.
+    let dir = temp_dir();
+    compare_ok(
+        dir.path(),
+        &["--preset", "moon", "-o", "compare-moon.gif", "-q"],
+    );
+    let fresh = std::fs::read(dir.path().join("compare-moon.gif")).unwrap();
+    let committed = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/img/compare-moon.gif");
+    if std::env::var_os("UPDATE_GOLDEN").is_some() {
+        std::fs::write(&committed, &fresh).unwrap();
+        return;
+    }
+    assert!(
+        std::fs::read(&committed).ok() == Some(fresh),
+        "docs/img/compare-moon.gif differs from what `compare --preset moon` draws now; if the \
+         change is intended, refresh it with \
+         `UPDATE_GOLDEN=1 cargo test --release --test compare the_readme_gif`"
+    );
+}
