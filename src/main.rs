@@ -163,6 +163,9 @@ struct CompareArgs {
     /// Print nothing on success
     #[arg(short, long)]
     quiet: bool,
+    /// Print help
+    #[arg(short, long, action = ArgAction::HelpShort)]
+    help: Option<bool>,
 }
 
 /// The lesson's scene, from the constants at the top of this file.
@@ -401,6 +404,13 @@ fn main() -> ExitCode {
 
 /// `compare`: runs the scene by every method, prints the table and what was written.
 fn compare_methods(args: Box<CompareArgs>, stop: Stop) -> ExitCode {
+    // Each method sets these three; typed for the scene they would be silently replaced.
+    for name in ["integrator", "substeps", "collisions"] {
+        if args.scene.settings.is_typed(name) {
+            eprintln!("error: {} is not allowed with compare: each method sets it; list them with --methods INTEGRATOR:SUBSTEPS:COLLISIONS", flag(name));
+            return ExitCode::from(2);
+        }
+    }
     let scene = match args.scene.scene() {
         Ok(scene) => scene,
         Err(error) => {

@@ -380,9 +380,12 @@ fn bad_methods_get_one_line_exit_2_and_no_file() {
 }
 
 #[test]
-fn a_refused_output_leaves_nothing_behind() {
+fn refused_outputs_and_settings_each_method_sets_leave_nothing_behind() {
     for args in [
-        &["--plot", "p.pdf"][..],
+        &["--integrator", "rk4"][..],
+        &["--substeps", "2"],
+        &["--collisions", "exact"],
+        &["--plot", "p.pdf"],
         &["-o", "c.png"],
         &["--table", "same.csv", "--plot", "same.csv"],
         &["--radius", "500"],
