@@ -63,24 +63,33 @@ fn outline_colour(background: Rgb) -> Rgb {
 
 /// The scene as the renderer should see it: every method's copy of every ball in the
 /// method's colour, the last method first so the first listed (the lesson's, by default) is
-/// drawn on top, and one last ball that is never drawn, so the palette holds the
-/// outline's colour too (and leaves room for it when trails are dimmed to fit).
+/// drawn on top; then a ball in each legend colour (the methods', the outline's) that is never
+/// drawn, so the palette holds them even for a scene without balls, and leaves room for them
+/// when trails are dimmed to fit.
 fn drawn_scene(scene: &Scene, methods: usize) -> Scene {
-    let mut balls = Vec::with_capacity(methods * scene.balls.len() + 1);
-    for colour in COLOURS[..methods].iter().rev() {
+    let colours = &COLOURS[..methods];
+    let mut balls = Vec::with_capacity((scene.balls.len() + 1) * methods + 1);
+    for colour in colours.iter().rev() {
         balls.extend(scene.balls.iter().map(|spec| BallSpec {
             colour: *colour,
             trail_colour: *colour,
             ..spec.clone()
         }));
     }
-    if let Some(first) = scene.balls.first() {
-        balls.push(BallSpec {
-            colour: outline_colour(scene.background),
-            trail: 0,
-            ..first.clone()
-        });
-    }
+    let inks = colours
+        .iter()
+        .copied()
+        .chain([outline_colour(scene.background)]);
+    balls.extend(inks.map(|colour| BallSpec {
+        x: 0.0,
+        y: 0.0,
+        vx: 0.0,
+        vy: 0.0,
+        radius: 1.0,
+        colour,
+        trail_colour: colour,
+        trail: 0,
+    }));
     Scene {
         balls,
         ..scene.clone()

@@ -144,26 +144,12 @@ pub fn compare(scene: &Scene, outputs: &CompareOutputs) -> Result<Comparison, Ru
     let chaotic = chaotic(scene);
     let conserves = measure::conserves_energy(scene);
     let table = table::text(&reference.describe(), &outcomes, chaotic, conserves);
-    if let Some(file) = files.table.as_mut() {
-        let out = BufWriter::new(file.file());
-        table::write_csv(out, &outcomes, chaotic).map_err(OutputError::at(file.path()))?;
-    }
-    if let (Some(file), Some(format)) = (files.plot.as_mut(), plot_format) {
-        let title = format!(
-            "work against precision: {} · reference {}",
-            balls_and_frames(scene),
-            reference.method
-        );
-        plot::write(
-            file.file(),
-            format,
-            &outcomes,
-            chaotic,
-            scene.frames,
-            &title,
-        )
-        .map_err(OutputError::at(file.path()))?;
-    }
+    let title = format!(
+        "work against precision: {} · reference {}",
+        balls_and_frames(scene),
+        reference.method
+    );
+    files.write_table_and_plot(&outcomes, chaotic, scene.frames, plot_format, &title)?;
     stop_if_asked(&outputs.stop, scene.frames, scene.frames)?;
     let sizes = files.commit()?;
     let paths = outputs.list().into_iter().map(|o| o.path.to_path_buf());
@@ -302,6 +288,26 @@ impl Files {
             table: optional(&outputs.table)?,
             plot: optional(&outputs.plot)?,
         })
+    }
+
+    /// Writes the CSV and the plot, each if asked for (`format` is the plot's).
+    fn write_table_and_plot(
+        &mut self,
+        outcomes: &[Outcome],
+        chaotic: bool,
+        frames: u32,
+        format: Option<Format>,
+        title: &str,
+    ) -> Result<(), OutputError> {
+        if let Some(file) = self.table.as_mut() {
+            let out = BufWriter::new(file.file());
+            table::write_csv(out, outcomes, chaotic).map_err(OutputError::at(file.path()))?;
+        }
+        if let (Some(file), Some(format)) = (self.plot.as_mut(), format) {
+            plot::write(file.file(), format, outcomes, chaotic, frames, title)
+                .map_err(OutputError::at(file.path()))?;
+        }
+        Ok(())
     }
 
     /// Puts every file in place; returns their sizes in the order of `CompareOutputs::list`.
