@@ -1,7 +1,7 @@
 //! The reference every method is measured against: RK4 with exact collisions, its substeps
 //! doubled until two runs in a row agree to [`REFERENCE_AGREEMENT`] px everywhere. Under
 //! gravity alone RK4 flies the exact parabola and exact mode bounces at the exact moment, so
-//! it agrees at once; drag and sloped floors take a few doublings; balls that collide with
+//! it agrees at once (sloped floors too); drag takes a few doublings; balls that collide with
 //! each other part chaotically at any step and never agree, which the reference then says.
 
 use crate::physics::tolerances::REFERENCE_AGREEMENT;
@@ -16,9 +16,10 @@ use crate::run::RunError;
 use crate::stop::Stop;
 
 /// The most ball-steps one run of the reference may take, weighted by what a step costs
-/// (a ball-ball collision step counts as [`COLLIDING_STEP_WEIGHT`]): about a second on the
-/// reference machine. The doubling stops there, converged or not, so the time is bounded and
-/// the same on every machine (the reference, and so the GIF, must not depend on the clock).
+/// (a ball-ball collision step counts as [`COLLIDING_STEP_WEIGHT`]): a second or two for one
+/// ball on the reference machine. The doubling stops there, converged or not, so the time is
+/// bounded and the same on every machine (the reference, and so the GIF, must not depend on
+/// the clock).
 const MAX_REFERENCE_STEPS: u64 = 1 << 24;
 /// What a ball-step with ball-ball collisions costs compared with one without (about 400 ns
 /// against 30 in the budget's fitted costs).
