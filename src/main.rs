@@ -404,33 +404,44 @@ fn main() -> ExitCode {
 
 /// `compare`: runs the scene by every method, prints the table and what was written.
 fn compare_methods(args: Box<CompareArgs>, stop: Stop) -> ExitCode {
+    let CompareArgs {
+        scene: scene_args,
+        methods,
+        gif,
+        png,
+        table,
+        plot,
+        quiet,
+        ..
+    } = *args;
     // Each method sets these three; typed for the scene they would be silently replaced.
     for name in ["integrator", "substeps", "collisions"] {
-        if args.scene.settings.is_typed(name) {
+        if scene_args.settings.is_typed(name) {
             eprintln!("error: {} is not allowed with compare: each method sets it; list them with --methods INTEGRATOR:SUBSTEPS:COLLISIONS", flag(name));
             return ExitCode::from(2);
         }
     }
-    let scene = match args.scene.scene() {
+    let scene = match scene_args.scene() {
         Ok(scene) => scene,
         Err(error) => {
             eprintln!("error: {error}");
             return ExitCode::from(2);
         }
     };
+    let plot_typed = plot.is_some();
     let outputs = compare::CompareOutputs {
-        methods: args.methods.clone(),
-        gif: args.gif.clone(),
-        png: args.png.clone(),
-        table: args.table.clone(),
-        plot: args.plot.clone(),
-        scene_file: args.scene.scene.clone(),
+        methods,
+        gif,
+        png,
+        table,
+        plot,
+        scene_file: scene_args.scene.clone(),
         budget: Budget::default(),
         stop,
     };
     match compare::compare(&scene, &outputs) {
         Ok(done) => {
-            if !args.quiet {
+            if !quiet {
                 let line = summary_line(&done.summary);
                 // A closed pipe (`| head`) is no reason to fail once the files are written.
                 let _ = writeln!(std::io::stdout(), "{}{line}", done.table);
@@ -441,8 +452,8 @@ fn compare_methods(args: Box<CompareArgs>, stop: Stop) -> ExitCode {
             match &error {
                 RunError::Invalid(bad) => {
                     let typed = |name: &str| match name {
-                        "plot" => args.plot.is_some(),
-                        setting => args.scene.settings.is_typed(setting),
+                        "plot" => plot_typed,
+                        setting => scene_args.settings.is_typed(setting),
                     };
                     eprintln!("error: {}", refuse_value(bad, typed))
                 }
