@@ -14,7 +14,7 @@ use bouncing_ball::scene::{
 };
 use bouncing_ball::stop::Stop;
 use bouncing_ball::sweep::{self, Change, Sweep, SweepError, SweepOutputs};
-use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene, Summary};
+use bouncing_ball::{compare, run, BallSpec, Outputs, RunError, Scene, Summary};
 use clap::{ArgAction, CommandFactory, FromArgMatches, Parser, Subcommand};
 use clap_complete::Shell;
 
@@ -148,6 +148,8 @@ struct SceneArgs {
 
 #[derive(Subcommand, Debug)]
 enum Command {
+    /// Run the scene with several methods side by side, each measured against a reference: a GIF of them together, a table of time, error and energy, and optionally a work-precision plot
+    Compare(Box<CompareArgs>),
     /// Print a shell completion script, for an installed binary (`cargo install --path .`), e.g. `bouncing_ball completions bash > ~/.local/share/bash-completion/completions/bouncing_ball`
     Completions {
         /// The shell to complete for
@@ -176,6 +178,38 @@ enum Command {
         #[arg(short, long, action = ArgAction::Help)]
         help: Option<bool>,
     },
+}
+
+/// `compare`: the scene as the main command takes it, the methods, and where the results go.
+#[derive(clap::Args, Debug)]
+struct CompareArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// The methods, each INTEGRATOR:SUBSTEPS:COLLISIONS (names as --integrator and
+    /// --collisions spell them), separated by commas
+    #[arg(long, value_name = "LIST", default_value = compare::methods::DEFAULT_METHODS,
+          value_parser = compare::methods::parse_list)]
+    methods: compare::methods::MethodList,
+    /// Where to write the animated GIF of all methods together
+    #[arg(short = 'o', long, default_value = "compare.gif")]
+    gif: PathBuf,
+    /// Where to write the still PNG (the last frame)
+    #[arg(long, default_value = "compare.png")]
+    png: PathBuf,
+    /// Also write the table as CSV
+    #[arg(long, value_name = "PATH")]
+    table: Option<PathBuf>,
+    /// Also draw error against time per ball-frame, log-log (SVG; PNG if PATH ends in .png)
+    #[arg(long, value_name = "PATH")]
+    plot: Option<PathBuf>,
+    #[command(flatten)]
+    budget: BudgetArgs,
+    /// Print nothing on success
+    #[arg(short, long)]
+    quiet: bool,
+    /// Print help
+    #[arg(short, long, action = ArgAction::HelpShort)]
+    help: Option<bool>,
 }
 
 /// The lesson's scene, from the constants at the top of this file.
@@ -238,7 +272,9 @@ impl SceneArgs {
 /// The command line, its scene settings showing the lesson's values as their defaults.
 fn command() -> clap::Command {
     let defaults = |command| Overrides::defaults_from(&lesson_scene(), command);
-    defaults(Args::command()).mut_subcommand("sweep", defaults)
+    defaults(Args::command())
+        .mut_subcommand("sweep", defaults)
+        .mut_subcommand("compare", defaults)
 }
 
 /// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
@@ -390,6 +426,7 @@ fn main() -> ExitCode {
             };
             return run_sweep(&values, &scene, &outputs);
         }
+        Some(Command::Compare(compare)) => return compare_methods(compare, stop),
         None => {}
     }
     let scene = match args.scene.scene() {
@@ -476,5 +513,59 @@ fn run_sweep(values: &str, args: &SceneArgs, outputs: &SweepOutputs) -> ExitCode
             eprintln!("error: {other}");
             ExitCode::from(other.exit_code())
         }
+    }
+}
+
+/// `compare`: runs the scene by every method, prints the table and what was written.
+fn compare_methods(args: Box<CompareArgs>, stop: Stop) -> ExitCode {
+    let CompareArgs {
+        scene: scene_args,
+        methods,
+        gif,
+        png,
+        table,
+        plot,
+        budget,
+        quiet,
+        ..
+    } = *args;
+    // Each method sets these three; typed for the scene they would be silently replaced.
+    for name in ["integrator", "substeps", "collisions"] {
+        if scene_args.settings.is_typed(name) {
+            eprintln!("error: {} is not allowed with compare: each method sets it; list them with --methods INTEGRATOR:SUBSTEPS:COLLISIONS", flag(name));
+            return ExitCode::from(2);
+        }
+    }
+    let scene = match scene_args.scene() {
+        Ok(scene) => scene,
+        Err(error) => {
+            eprintln!("error: {error}");
+            return ExitCode::from(2);
+        }
+    };
+    let plot_typed = plot.is_some();
+    let outputs = compare::CompareOutputs {
+        methods,
+        gif,
+        png,
+        table,
+        plot,
+        scene_file: scene_args.scene.clone(),
+        budget: budget.budget(),
+        stop,
+    };
+    match compare::compare(&scene, &outputs) {
+        Ok(done) => {
+            if !quiet {
+                let line = summary_line(&done.summary);
+                // A closed pipe (`| head`) is no reason to fail once the files are written.
+                let _ = writeln!(std::io::stdout(), "{}{line}", done.table);
+            }
+            ExitCode::SUCCESS
+        }
+        Err(error) => fail(&error, |name| match name {
+            "plot" => plot_typed,
+            setting => scene_args.settings.is_typed(setting),
+        }),
     }
 }

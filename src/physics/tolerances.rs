@@ -82,3 +82,10 @@ pub const TOUCHES_PER_CONTACT: usize = 4;
 /// A grid never has more than about this many cells per ball: when balls are spread thin
 /// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).
 pub const MAX_CELLS_PER_BALL: f64 = 4.0;
+
+// ---- Comparing methods (`bouncing_ball compare`) ----
+
+/// How closely two runs of the reference (RK4, exact collisions) with the second's substeps
+/// doubled must agree, px, at every ball in every frame, for the finer to be the reference: far
+/// below a pixel, and a thousand times below the error of the best method worth comparing.
+pub const REFERENCE_AGREEMENT: f64 = 1e-9;

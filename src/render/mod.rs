@@ -3,6 +3,7 @@
 //! - [`palette`]: the colour table, built once per scene, with the trail's faded shades.
 //! - [`ellipse`]: solid circles, exactly the pixels Pillow's `ImageDraw.ellipse` fills.
 //! - [`line`]: one-pixel floor segments.
+//! - [`outline`]: one-pixel circle outlines (where `compare` says a ball should be).
 //! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
 //! - [`png`]: one frame as an RGB PNG.
 //! - [`text`]: labels in the plot's font, one palette colour, drawn into a frame.
@@ -10,6 +11,7 @@
 
 pub mod ellipse;
 pub mod line;
+pub mod outline;
 pub mod palette;
 pub mod png;
 pub mod raster;
