@@ -35,7 +35,6 @@ import statistics
 import subprocess
 import sys
 import time
-import timeit
 from pathlib import Path
 
 try:
@@ -87,8 +86,9 @@ OUR_METHODS = [
     "rk4:16:exact",
 ]
 LESSON_METHOD = "semi-implicit-euler:1:clamp"
-# Whole runs of ours timed together per repetition (one run is tens of microseconds).
+# Whole runs timed together per repetition (one run of ours is tens of microseconds).
 RUST_RUNS = 1000
+LESSON_RUNS = 50
 
 
 # --- the reference -----------------------------------------------------------------------
@@ -291,34 +291,39 @@ def measure_errors(ref, bounces):
     return rows
 
 
-def timed(function):
+def timed(function, runs=1):
+    """Seconds per run of `function`, `runs` runs timed together."""
     started = time.perf_counter()
-    function()
-    return time.perf_counter() - started
+    for _ in range(runs):
+        function()
+    return (time.perf_counter() - started) / runs
 
 
 def measure_times(rows, reps):
-    """Interleaved: every Python method once, then ours once (RUST_RUNS runs each), REPS times."""
-    python = [lambda m=m: run_scipy(*m) for m in SCIPY_METHODS] + [run_lesson_loop]
+    """Interleaved, REPS times: every Python method, then ours (RUST_RUNS runs each). A SciPy
+    run lasts milliseconds; the lesson's loop, a tenth of one, is timed LESSON_RUNS at a time."""
+    python = [(lambda m=m: run_scipy(*m), 1) for m in SCIPY_METHODS]
+    python.append((run_lesson_loop, LESSON_RUNS))
     ours = rows[len(python):]
     for _ in range(reps):
-        for row, run in zip(rows, python):
-            row.seconds.append(timed(run))
+        for row, (run, runs) in zip(rows, python):
+            row.seconds.append(timed(run, runs))
         for name, ns in anchors("time", DRAG, DAMPING, FRAMES, RUST_RUNS, *OUR_METHODS):
             ours[OUR_METHODS.index(name)].seconds.append(float(ns) * 1e-9)
 
 
 def call_costs():
-    """µs, medians of 11: one solve_ivp call (RK45, the four events, a tenth of a frame) and
-    one call of the right-hand side."""
+    """µs, medians of 201 (a median, as a busy machine adds rare long pauses): one solve_ivp call
+    (RK45, the four events, a tenth of a frame), and one call of the right-hand side (timed 100
+    at a time)."""
     state = np.array(START)  # what solve_ivp hands the right-hand side
 
     def short_solve():
         solve_ivp(rhs, (0.0, 0.1), state, events=EVENTS)
 
-    solves = timeit.repeat(short_solve, number=20, repeat=11)
-    calls = timeit.repeat(lambda: rhs(0.0, state), number=10_000, repeat=11)
-    return statistics.median(solves) / 20 * 1e6, statistics.median(calls) / 10_000 * 1e6
+    solves = [timed(short_solve) for _ in range(201)]
+    calls = [timed(lambda: rhs(0.0, state), 100) for _ in range(201)]
+    return statistics.median(solves) * 1e6, statistics.median(calls) * 1e6
 
 
 def spread(seconds, bounces):
@@ -367,7 +372,8 @@ def main():
           f"scipy {scipy.__version__}; load average {load_before} before, {load()} after")
     print(f"The lesson's ball with drag {DRAG}, damping {DAMPING}, {FRAMES} frames: {bounces} "
           f"bounces. Times: median (min–max) of {reps} whole runs, per bounce.\n")
-    print("| method | largest position error, px | µs per bounce | f evaluations per run |")
+    print("| method | largest position error, px | µs per bounce: median (min–max) "
+          "| f evaluations per run |")
     print("|---|---:|---:|---:|")
     for row in rows:
         nfev = row.nfev or "—"
