@@ -91,6 +91,13 @@ struct Args {
     #[arg(long, value_name = "PATH")]
     plot: Option<PathBuf>,
     #[command(flatten)]
+    run: RunArgs,
+}
+
+/// What every command that runs a scene takes besides the scene and its outputs.
+#[derive(clap::Args, Debug)]
+struct RunArgs {
+    #[command(flatten)]
     budget: BudgetArgs,
     /// Print nothing on success
     #[arg(short, long)]
@@ -100,8 +107,7 @@ struct Args {
     help: Option<bool>,
 }
 
-/// What a run may be predicted to need before it is refused (the main command's and every
-/// subcommand that runs a scene).
+/// What a run may be predicted to need before it is refused.
 #[derive(clap::Args, Debug)]
 struct BudgetArgs {
     /// Refuse a scene predicted to need more memory than this, MB
@@ -170,13 +176,7 @@ enum Command {
         #[arg(long)]
         png: Option<PathBuf>,
         #[command(flatten)]
-        budget: BudgetArgs,
-        /// Print nothing on success
-        #[arg(short, long)]
-        quiet: bool,
-        /// Print help
-        #[arg(short, long, action = ArgAction::Help)]
-        help: Option<bool>,
+        run: RunArgs,
     },
 }
 
@@ -203,13 +203,7 @@ struct CompareArgs {
     #[arg(long, value_name = "PATH")]
     plot: Option<PathBuf>,
     #[command(flatten)]
-    budget: BudgetArgs,
-    /// Print nothing on success
-    #[arg(short, long)]
-    quiet: bool,
-    /// Print help
-    #[arg(short, long, action = ArgAction::HelpShort)]
-    help: Option<bool>,
+    run: RunArgs,
 }
 
 /// The lesson's scene, from the constants at the top of this file.
@@ -412,16 +406,15 @@ fn main() -> ExitCode {
             scene,
             gif,
             png,
-            budget,
-            quiet,
+            run,
             ..
         }) => {
             let outputs = SweepOutputs {
                 gif,
                 png,
-                progress: !quiet,
+                progress: !run.quiet,
                 scene_file: scene.scene.clone(),
-                budget: budget.budget(),
+                budget: run.budget.budget(),
                 stop,
             };
             return run_sweep(&values, &scene, &outputs);
@@ -439,15 +432,15 @@ fn main() -> ExitCode {
     let outputs = Outputs {
         trace: args.trace.clone(),
         plot: args.plot.clone().or_else(|| scene.plot.clone()),
-        progress: !args.quiet,
+        progress: !args.run.quiet,
         scene_file: args.scene.scene.clone(),
-        budget: args.budget.budget(),
+        budget: args.run.budget.budget(),
         stop,
         ..Outputs::new(&args.gif, &args.png)
     };
     match run(&scene, &outputs) {
         Ok(summary) => {
-            if !args.quiet {
+            if !args.run.quiet {
                 let line = summary_line(&summary);
                 // Standard output may carry the trace, or be a closed pipe: never fail on it.
                 let _ = if outputs.trace_on_stdout() {
@@ -525,8 +518,7 @@ fn compare_methods(args: Box<CompareArgs>, stop: Stop) -> ExitCode {
         png,
         table,
         plot,
-        budget,
-        quiet,
+        run,
         ..
     } = *args;
     // Each method sets these three; typed for the scene they would be silently replaced.
@@ -551,12 +543,12 @@ fn compare_methods(args: Box<CompareArgs>, stop: Stop) -> ExitCode {
         table,
         plot,
         scene_file: scene_args.scene.clone(),
-        budget: budget.budget(),
+        budget: run.budget.budget(),
         stop,
     };
     match compare::compare(&scene, &outputs) {
         Ok(done) => {
-            if !quiet {
+            if !run.quiet {
                 let line = summary_line(&done.summary);
                 // A closed pipe (`| head`) is no reason to fail once the files are written.
                 let _ = writeln!(std::io::stdout(), "{}{line}", done.table);
