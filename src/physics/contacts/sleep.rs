@@ -64,6 +64,11 @@ impl Sleep {
         self.island_of[ball] != AWAKE
     }
 
+    /// How many balls sleep.
+    pub fn sleeping(&self) -> usize {
+        self.sleeping
+    }
+
     /// Whether some ball sleeps.
     pub fn anyone_asleep(&self) -> bool {
         self.sleeping > 0

@@ -372,6 +372,11 @@ impl ContactSolver {
         }
     }
 
+    /// How many balls sleep now (`super::sleep`).
+    pub fn sleeping(&self) -> usize {
+        self.sleep.sleeping()
+    }
+
     /// Advances every ball one frame (its substeps) under `effects`, with `motion`'s
     /// integrator and iterations; trails are the caller's business.
     pub fn step(&mut self, scene_balls: &mut [Ball], effects: &Effects, motion: &Motion) {

@@ -140,6 +140,11 @@ impl EventDriven {
         self.counts
     }
 
+    /// How many balls slept in the last step (the sleep rule).
+    pub fn sleeping(&self) -> usize {
+        self.asleep.iter().filter(|&&asleep| asleep).count()
+    }
+
     /// Advances `balls` by one frame of `steps` steps of `forces.dt` frames.
     pub fn frame(
         &mut self,
