@@ -8,7 +8,7 @@
 //!   more calm step; faster, its count starts again at 0. An island of the step (balls joined
 //!   by contacts, see `super::solver`) whose every ball has been calm for
 //!   [`SLEEP_FRAMES`](crate::physics::tolerances::SLEEP_FRAMES) frames sleeps whole: its balls
-//!   stop (their velocities set to 0, as Box2D v2.4 does, so that a sleeping ball's state is
+//!   stop (their velocities set to 0, as Box2D v2.4 and rapier do, so that a sleeping ball's state is
 //!   exactly what it keeps) and stay where they are to the bit. The impulses its contacts
 //!   ended with are kept, to warm-start them when it wakes.
 //! - **Asleep.** A sleeping ball takes no gravity, no contact and no wall or floor check. When
