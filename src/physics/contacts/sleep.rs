@@ -37,7 +37,7 @@ pub struct Sleep {
     free: Vec<u32>,
     /// How many balls sleep.
     sleeping: usize,
-    /// The kept impulses of the islands woken since `take_woken` was last called.
+    /// The kept impulses of the islands woken since they were last taken.
     woken: Vec<(u64, f64)>,
 }
 
@@ -137,8 +137,9 @@ impl Sleep {
         true
     }
 
-    /// The kept impulses of the islands woken since the last call, for the warm start.
-    pub fn take_woken(&mut self) -> impl Iterator<Item = (u64, f64)> + '_ {
-        self.woken.drain(..)
+    /// The kept impulses of the islands woken since they were last taken, for the warm
+    /// start: the caller takes them (and leaves the list empty).
+    pub fn woken(&mut self) -> &mut Vec<(u64, f64)> {
+        &mut self.woken
     }
 }

@@ -308,7 +308,7 @@ struct Scratch {
     spare_fixed: Vec<FixedContact>,
     /// The balls (of `local`) without a contact this step, at its start.
     untouched: Vec<usize>,
-    /// Whether each ball (of `local`) sleeps this step.
+    /// Whether each ball (of `local`) sleeps this step; empty while none sleeps.
     asleep: Vec<bool>,
     /// Where an island's balls were (position, velocity), for when it cannot be solved
     /// touch by touch.
@@ -418,7 +418,7 @@ impl ContactSolver {
         let scratch = &mut self.scratch;
         let restitution = self.settings.restitution;
         scratch.find(balls, effects, dt, restitution, &mut self.sleep);
-        self.memory.keep(self.sleep.take_woken());
+        self.memory.keep(self.sleep.woken());
         self.memory.recall(&mut scratch.pairs, &mut scratch.fixed);
         scratch.sort_into_islands(balls.len());
     }
@@ -428,7 +428,7 @@ impl ContactSolver {
     fn store(&mut self) {
         let scratch = &self.scratch;
         self.memory.store(&scratch.pairs, &scratch.fixed);
-        self.memory.keep(self.sleep.take_woken());
+        self.memory.keep(self.sleep.woken());
     }
 
     /// Counts each awake ball's calm steps, and puts to sleep each island of the step whose
@@ -482,14 +482,14 @@ impl WarmStartMemory {
         self.impulses.sort_unstable_by_key(|&(key, _)| key);
     }
 
-    /// Adds `kept` impulses (of an island that wakes) to those remembered.
-    fn keep(&mut self, kept: impl Iterator<Item = (u64, f64)>) {
-        let before = self.impulses.len();
-        self.impulses.extend(kept);
-        if self.impulses.len() > before {
-            self.impulses.sort_unstable_by_key(|&(key, _)| key);
-            self.impulses.dedup_by_key(|&mut (key, _)| key);
+    /// Takes the `kept` impulses (of islands that woke) into those remembered.
+    fn keep(&mut self, kept: &mut Vec<(u64, f64)>) {
+        if kept.is_empty() {
+            return; // the common case: nothing woke
         }
+        self.impulses.append(kept);
+        self.impulses.sort_unstable_by_key(|&(key, _)| key);
+        self.impulses.dedup_by_key(|&mut (key, _)| key);
     }
 }
 
@@ -579,7 +579,8 @@ impl Scratch {
 
     /// Copies each ball into `local` in the grid's order, and finds its walls and floors,
     /// in one pass.
-    /// A sleeping ball is copied, and marked in `asleep`, but has no contact.
+    /// A sleeping ball is copied but has no contact; while any ball sleeps, `asleep` marks
+    /// each (and is left empty otherwise, so that a scene where none sleeps pays nothing).
     fn copy_and_find_fixed(
         &mut self,
         balls: &[Ball],
@@ -590,13 +591,15 @@ impl Scratch {
         self.local.clear();
         self.fixed.clear();
         self.asleep.clear();
+        let sleepers = sleep.anyone_asleep();
         for (k, &i) in self.grid.order().iter().enumerate() {
             let ball = &Body::of(&balls[i]);
             self.local.push(*ball);
-            let asleep = sleep.anyone_asleep() && sleep.is_asleep(i);
-            self.asleep.push(asleep);
-            if asleep {
-                continue;
+            if sleepers {
+                self.asleep.push(sleep.is_asleep(i));
+                if sleep.is_asleep(i) {
+                    continue;
+                }
             }
             let centre = ball.position;
             let mut touch = |id: u64, normal: Vec2, surface: f64, restitution: f64| {
@@ -651,9 +654,10 @@ impl Scratch {
         // in `local`: `a < b`, close together in memory, no lookup needed.
         self.pairs.clear();
         self.unlisted.clear();
+        let sleepers = !self.asleep.is_empty();
         for &[a, b] in &self.places {
             let (a, b) = (a as usize, b as usize);
-            if self.asleep[a] && self.asleep[b] {
+            if sleepers && self.asleep[a] && self.asleep[b] {
                 continue; // two sleeping balls: neither moves
             }
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
@@ -717,9 +721,12 @@ impl Scratch {
     fn number_islands(&mut self, count: usize) {
         let (parent, island_of) = (&mut self.parent, &mut self.island_of);
         island_of.clear();
-        let mark = |&asleep: &bool| if asleep { ASLEEP } else { NO_ISLAND };
-        island_of.extend(self.asleep.iter().map(mark));
-        debug_assert_eq!(island_of.len(), count);
+        if self.asleep.is_empty() {
+            island_of.resize(count, NO_ISLAND);
+        } else {
+            let mark = |&asleep: &bool| if asleep { ASLEEP } else { NO_ISLAND };
+            island_of.extend(self.asleep.iter().map(mark));
+        }
         self.islands.clear();
         self.with_contact.clear();
         let with_contact = self.pairs.iter().flat_map(|c| [c.a, c.b]);
