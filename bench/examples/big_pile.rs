@@ -49,7 +49,7 @@ fn main() {
     while simulation.sleeping_balls() < COUNT && frame < PATIENCE {
         simulation.step();
         frame += 1;
-        if frame % 250 == 0 {
+        if frame.is_multiple_of(250) {
             report(&simulation, frame);
         }
     }
