@@ -49,12 +49,16 @@
 //!      the solve adds none, and the push is done here, on positions, as in Box2D v2.4.)
 //! 4. A ball that can touch nothing takes the whole step at once, as in the lesson, and the
 //!    balls are copied back into the scene, inside its walls.
-//! 5. **Restitution** (`ContactSolver::restitution`): the bounces left after the
+//! 5. **Restitution** (`Scratch::restitution`): the bounces left after the
 //!    sub-steps. Every listed contact has bounced in its solve; what is left is a pair the
 //!    step did not list (a ball struck within the step, running into a neighbour it was not
 //!    heading for), which is set apart to touching and bounces now.
 //! 6. **Store** (`ContactSolver::store`): each contact's impulse goes into the warm-start
 //!    memory for the next step.
+//! 7. **Sleep** (`ContactSolver::fall_asleep`): an island whose balls have all been slow for
+//!    long enough sleeps (`super::sleep` has the rule). A sleeping ball takes no part in the
+//!    stages above until an awake ball can touch it, which the grid's pairs show in step 1,
+//!    and a step in which every ball sleeps does nothing at all.
 //!
 //! Everything happens in a fixed order (the grid's), so the same balls give the same bytes.
 
@@ -290,7 +294,7 @@ struct Scratch {
     /// The pairs the grid finds, as places in its order.
     places: Vec<[u32; 2]>,
     /// Of those, the pairs that could not touch as the step began (see
-    /// `ContactSolver::restitution`).
+    /// `Scratch::restitution`).
     unlisted: Vec<[u32; 2]>,
     /// This step's contacts, island by island once sorted.
     pairs: Vec<PairContact>,
@@ -412,8 +416,8 @@ impl ContactSolver {
     }
 
     /// Prepares the step `dt`: finds its contacts, gives each the impulse it ended the last
-    /// step with, and sorts them into islands.
-    /// Sleeping balls take no part, but an island an awake ball can touch wakes first.
+    /// step with, and sorts them into islands. Sleeping balls take no part, but an island an
+    /// awake ball can touch wakes first.
     fn prepare(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
         let scratch = &mut self.scratch;
         let restitution = self.settings.restitution;
@@ -578,9 +582,9 @@ impl Scratch {
     }
 
     /// Copies each ball into `local` in the grid's order, and finds its walls and floors,
-    /// in one pass.
-    /// A sleeping ball is copied but has no contact; while any ball sleeps, `asleep` marks
-    /// each (and is left empty otherwise, so that a scene where none sleeps pays nothing).
+    /// in one pass. A sleeping ball is copied but has no contact; while any ball sleeps,
+    /// `asleep` marks each (it is left empty otherwise: a scene where none sleeps pays
+    /// nothing for it).
     fn copy_and_find_fixed(
         &mut self,
         balls: &[Ball],
@@ -711,9 +715,9 @@ impl Scratch {
     }
 
     /// Numbers the islands of the union–find tree `parent` in the order their contacts were
-    /// found, visiting only the balls with a contact (the rest stay at `NO_ISLAND`, or
-    /// `ASLEEP` for those that sleep), and
-    /// counts each island's balls and contacts (in the ends of its ranges).
+    /// found, visiting only the balls with a contact (the rest stay at `NO_ISLAND`, or at
+    /// `ASLEEP` for those that sleep), and counts each island's balls and contacts (in the
+    /// ends of its ranges).
     ///
     /// Islands share no ball and a ball's own motion does not depend on the others', so
     /// neither the islands' order nor their balls' changes a number: only each island's
