@@ -216,6 +216,60 @@ impl Estimate {
         Ok(estimate)
     }
 
+    /// The cost of `panels` run side by side on one `width` × `height` canvas (a sweep), refused
+    /// if over `budget`: every panel's physics and drawing, and one GIF of the whole canvas,
+    /// whose changed rectangle spans the panels (taken as the whole canvas in every frame some
+    /// panel changes). Memory is checked first, from the scenes alone.
+    pub fn of_tiles(
+        panels: &[&Scene],
+        width: u32,
+        height: u32,
+        budget: &Budget,
+    ) -> Result<Estimate, OverBudget> {
+        let frames = panels.iter().map(|s| s.frames).max().unwrap_or(1);
+        let canvas = Scene {
+            frames,
+            ..Scene::empty(width, height)
+        };
+        let biggest = "the panels' runs and the tiled frames";
+        // Each panel: its balls, trails and shades, and the one frame it is drawn into; the
+        // program itself, the GIF's queue and the still are the canvas's.
+        let panel_memory = |scene: &Scene| {
+            let frame = u64::from(scene.width) * u64::from(scene.height);
+            let bare = memory_of(&Scene::empty(scene.width, scene.height)).0;
+            memory_of(scene).0.saturating_sub(bare) + frame
+        };
+        let memory = memory_of(&canvas).0 + panels.iter().map(|s| panel_memory(s)).sum::<u64>();
+        if memory > budget.memory {
+            return Err(OverBudget::Memory {
+                needed: memory,
+                budget: budget.memory,
+                biggest,
+            });
+        }
+        // The panels' own changes, coded as the canvas's.
+        let mut activity = Activity::default();
+        for scene in panels {
+            activity.add(Activity::of(scene));
+        }
+        activity.changed_frames = activity.changed_frames.min(f64::from(frames));
+        activity.rect_pixels = activity.changed_frames * f64::from(width) * f64::from(height);
+        let parts = panels.iter().map(|scene| (*scene, Activity::default()));
+        let parts: Vec<Estimate> = parts
+            .chain([(&canvas, activity)])
+            .map(|(scene, activity)| Estimate::with_memory(scene, memory, biggest, activity))
+            .collect();
+        let estimate = Estimate {
+            memory,
+            frame_ns: parts.iter().map(|e| e.frame_ns).sum(),
+            seconds: parts.iter().map(|e| e.seconds).sum(),
+            gif_bytes: parts.iter().map(|e| e.gif_bytes).sum(),
+            biggest,
+        };
+        estimate.check_time_and_size(budget)?;
+        Ok(estimate)
+    }
+
     /// The time and GIF size of `scene` when its frames change as `activity` says, beside its
     /// memory.
     fn with_memory(

@@ -10,13 +10,17 @@
 //! - [`gif`]: the animated GIF, streamed out.
 //! - [`plot`]: height, speed and energy of the run against frame, as SVG or PNG.
 //!
-//! At the top, [`run`] ties them together for the command line, [`budget`] works out before
-//! the first frame what a scene will cost, [`output`] makes files appear whole or not at all
-//! and only where a file belongs, [`stop`] ends a run cleanly on a signal, [`trace`] writes
-//! the CSV and [`progress`] shows how far a long run is.
+//! At the top, [`run`] ties them together for the command line, [`compare`] runs one scene
+//! by several methods side by side against a reference, [`sweep`] runs it once per value of
+//! one setting and tiles the runs into one GIF. [`budget`] works out before the first frame
+//! what a scene will cost, [`output`] makes files appear whole or not at all and only where a
+//! file belongs, [`stop`] ends a run cleanly on a signal, [`trace`] writes the CSV,
+//! [`progress`] shows how far a long run is, and [`messages`] says what went wrong in one line.
 
 pub mod budget;
+pub mod compare;
 pub mod gif;
+pub mod messages;
 pub mod output;
 pub mod physics;
 pub mod plot;
@@ -25,6 +29,7 @@ pub mod render;
 pub mod run;
 pub mod scene;
 pub mod stop;
+pub mod sweep;
 pub mod trace;
 
 pub use run::{run, Outputs, RunError, Summary};

@@ -8,12 +8,12 @@ use std::process::ExitCode;
 use bouncing_ball::budget::{
     Budget, DEFAULT_GIF_BUDGET, DEFAULT_MEMORY_BUDGET, DEFAULT_TIME_BUDGET,
 };
+use bouncing_ball::messages::{fail, flag, refuse, summary_line, whole_number};
 use bouncing_ball::scene::file::Canvas;
-use bouncing_ball::scene::{
-    self, preset_names, InvalidValue, Overrides, SceneFileError, TrailFade,
-};
+use bouncing_ball::scene::{self, preset_names, Overrides, SceneFileError, TrailFade};
 use bouncing_ball::stop::Stop;
-use bouncing_ball::{run, BallSpec, Outputs, RunError, Scene, Summary};
+use bouncing_ball::sweep::{self, Change, Sweep, SweepError, SweepOutputs};
+use bouncing_ball::{compare, run, BallSpec, Outputs, Scene};
 use clap::{ArgAction, CommandFactory, FromArgMatches, Parser, Subcommand};
 use clap_complete::Shell;
 
@@ -89,6 +89,26 @@ struct Args {
     /// Also draw height, speed and energy per frame (SVG; PNG if PATH ends in .png)
     #[arg(long, value_name = "PATH")]
     plot: Option<PathBuf>,
+    #[command(flatten)]
+    run: RunArgs,
+}
+
+/// What every command that runs a scene takes besides the scene and its outputs.
+#[derive(clap::Args, Debug)]
+struct RunArgs {
+    #[command(flatten)]
+    budget: BudgetArgs,
+    /// Print nothing on success
+    #[arg(short, long)]
+    quiet: bool,
+    /// Print help
+    #[arg(short, long, action = ArgAction::HelpShort)]
+    help: Option<bool>,
+}
+
+/// What a run may be predicted to need before it is refused.
+#[derive(clap::Args, Debug)]
+struct BudgetArgs {
     /// Refuse a scene predicted to need more memory than this, MB
     #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_BUDGET >> 20,
           value_parser = whole_number, allow_hyphen_values = true)]
@@ -101,17 +121,21 @@ struct Args {
     #[arg(long, value_name = "MB", default_value_t = DEFAULT_GIF_BUDGET >> 20,
           value_parser = whole_number, allow_hyphen_values = true)]
     gif_budget: u64,
-    /// Print nothing on success
-    #[arg(short, long)]
-    quiet: bool,
-    /// Print help
-    #[arg(short, long, action = ArgAction::HelpShort)]
-    help: Option<bool>,
+}
+
+impl BudgetArgs {
+    fn budget(&self) -> Budget {
+        Budget {
+            memory: self.memory_budget.saturating_mul(1 << 20),
+            seconds: self.time_budget as f64,
+            gif_bytes: self.gif_budget.saturating_mul(1 << 20),
+        }
+    }
 }
 
 /// What to simulate: a scene file, a preset or the lesson's scene, and the flags laid over it
 /// (the main command's, and every subcommand that runs a scene).
-#[derive(clap::Args, Debug)]
+#[derive(clap::Args, Clone, Debug)]
 struct SceneArgs {
     /// Load the scene from a TOML file (- for standard input)
     #[arg(short, long, conflicts_with = "preset")]
@@ -129,11 +153,56 @@ struct SceneArgs {
 
 #[derive(Subcommand, Debug)]
 enum Command {
+    /// Run the scene with several methods side by side, each measured against a reference: a GIF of them together, a table of time, error and energy, and optionally a work-precision plot
+    Compare(Box<CompareArgs>),
     /// Print a shell completion script, for an installed binary (`cargo install --path .`), e.g. `bouncing_ball completions bash > ~/.local/share/bash-completion/completions/bouncing_ball`
     Completions {
         /// The shell to complete for
         shell: Shell,
     },
+    /// Run the scene once per value of one setting, side by side in one GIF, e.g. `bouncing_ball sweep damping=0.5,0.7,0.88,1` (docs/sweep.md)
+    Sweep {
+        /// The setting to vary and its values: a flag's name without -- (or preset), =, values separated by commas
+        #[arg(value_name = "KEY=V1,V2,...")]
+        values: String,
+        // Boxed: the scene's flags are most of the command line's size.
+        #[command(flatten)]
+        scene: Box<SceneArgs>,
+        /// Where to write the tiled GIF
+        #[arg(short = 'o', long, default_value = "sweep.gif")]
+        gif: PathBuf,
+        /// Also write the last tiled frame as a PNG
+        #[arg(long)]
+        png: Option<PathBuf>,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+}
+
+/// `compare`: the scene as the main command takes it, the methods, and where the results go.
+#[derive(clap::Args, Debug)]
+struct CompareArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// The methods, each INTEGRATOR:SUBSTEPS:COLLISIONS (names as --integrator and
+    /// --collisions spell them), separated by commas
+    #[arg(long, value_name = "LIST", default_value = compare::methods::DEFAULT_METHODS,
+          value_parser = compare::methods::parse_list)]
+    methods: compare::methods::MethodList,
+    /// Where to write the animated GIF of all methods together
+    #[arg(short = 'o', long, default_value = "compare.gif")]
+    gif: PathBuf,
+    /// Where to write the still PNG (the last frame)
+    #[arg(long, default_value = "compare.png")]
+    png: PathBuf,
+    /// Also write the table as CSV
+    #[arg(long, value_name = "PATH")]
+    table: Option<PathBuf>,
+    /// Also draw error against time per ball-frame, log-log (SVG; PNG if PATH ends in .png)
+    #[arg(long, value_name = "PATH")]
+    plot: Option<PathBuf>,
+    #[command(flatten)]
+    run: RunArgs,
 }
 
 /// The lesson's scene, from the constants at the top of this file.
@@ -176,118 +245,29 @@ impl SceneArgs {
         self.settings.apply(&mut scene);
         Ok(scene)
     }
+
+    /// The scene with a sweep's change laid over it, as if it had been typed too.
+    fn changed(&self, change: &Change) -> Result<Scene, SceneFileError> {
+        let args = match change {
+            Change::Preset(name) => SceneArgs {
+                preset: Some(name.clone()),
+                ..self.clone()
+            },
+            Change::Setting(setting) => SceneArgs {
+                settings: setting.or(&self.settings),
+                ..self.clone()
+            },
+        };
+        args.scene()
+    }
 }
 
 /// The command line, its scene settings showing the lesson's values as their defaults.
 fn command() -> clap::Command {
-    Overrides::defaults_from(&lesson_scene(), Args::command())
-}
-
-/// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
-fn flag(key: &str) -> String {
-    let name = key.rsplit('.').next().unwrap_or(key);
-    format!("--{}", name.replace('_', "-"))
-}
-
-/// What a run wrote, in one line: every file with its size, the GIF's frames, the time.
-fn summary_line(summary: &Summary) -> String {
-    let files: Vec<String> = summary
-        .files
-        .iter()
-        .enumerate()
-        .map(|(k, (path, bytes))| match k {
-            0 => format!(
-                "{} ({} frames, {bytes} bytes)",
-                path.display(),
-                summary.frames
-            ),
-            _ => format!("{} ({bytes} bytes)", path.display()),
-        })
-        .collect();
-    let list = match files.split_last() {
-        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
-        _ => files.join(""),
-    };
-    let ms = summary.elapsed.as_secs_f64() * 1000.0;
-    format!("wrote {list} in {ms:.1} ms")
-}
-
-/// A command-line error in one line (clap spreads it over several): what was wrong, what is
-/// allowed and, for a near miss, the nearest name. Help and version print as clap prints them.
-fn refuse(error: clap::Error) -> ExitCode {
-    use clap::error::ErrorKind::{DisplayHelp, DisplayVersion};
-    use clap::error::{ContextKind, ContextValue};
-    if matches!(error.kind(), DisplayHelp | DisplayVersion) {
-        error.exit();
-    }
-    let text = |kind| match error.get(kind) {
-        Some(ContextValue::String(text)) => Some(text.clone()),
-        Some(ContextValue::Strings(texts)) if !texts.is_empty() => Some(texts.join(" or ")),
-        _ => None,
-    };
-    let mut line = match (
-        text(ContextKind::InvalidArg),
-        text(ContextKind::InvalidValue),
-    ) {
-        // `--width <WIDTH>` and `9000`: said as the user typed it, then why.
-        (Some(arg), Some(value)) if !value.is_empty() => {
-            // A flag is named by its long form; the one value without a flag is the shell.
-            let flag = match arg.split(' ').next().unwrap_or(&arg) {
-                "<SHELL>" => "completions",
-                flag => flag,
-            };
-            match std::error::Error::source(&error) {
-                Some(why) => format!("error: {flag} {value} is not allowed: {why}"),
-                None => format!("error: {flag} {value} is not allowed"),
-            }
-        }
-        _ => error
-            .to_string()
-            .lines()
-            .next()
-            .unwrap_or("error")
-            .trim_end()
-            .to_string(),
-    };
-    if let Some(ContextValue::Strings(allowed)) = error.get(ContextKind::ValidValue) {
-        if !allowed.is_empty() {
-            line += &format!("; allowed: {}", allowed.join(", "));
-        }
-    }
-    for kind in [ContextKind::SuggestedValue, ContextKind::SuggestedArg] {
-        if let Some(near) = text(kind) {
-            line += &format!("; did you mean {near}?");
-        }
-    }
-    eprintln!("{line}; see --help");
-    ExitCode::from(2)
-}
-
-/// A value the scene cannot take, named as the user knows it: the flag they typed, or the
-/// scene's own value that what they typed no longer fits (`--radius 60` with the default x).
-fn refuse_value(bad: &InvalidValue, typed: impl Fn(&str) -> bool) -> String {
-    let name = bad.key.rsplit('.').next().unwrap_or(&bad.key);
-    if typed(name) {
-        return format!(
-            "{} {} is not allowed: {}",
-            flag(&bad.key),
-            bad.value,
-            bad.allowed
-        );
-    }
-    format!(
-        "the scene's {} = {} (not typed: set it with {}) does not fit what was typed: {}",
-        bad.key,
-        bad.value,
-        flag(&bad.key),
-        bad.allowed
-    )
-}
-
-/// A whole number from 0 up, said so when it is not (`--seed -1`).
-fn whole_number(text: &str) -> Result<u64, String> {
-    text.parse()
-        .map_err(|_| format!("must be a whole number from 0 to {}", u64::MAX))
+    let defaults = |command| Overrides::defaults_from(&lesson_scene(), command);
+    defaults(Args::command())
+        .mut_subcommand("sweep", defaults)
+        .mut_subcommand("compare", defaults)
 }
 
 fn main() -> ExitCode {
@@ -307,14 +287,32 @@ fn main() -> ExitCode {
         Ok(args) => args,
         Err(error) => return refuse(error),
     };
-    if let Some(Command::Completions { shell }) = args.command {
-        clap_complete::generate(
-            shell,
-            &mut command(),
-            "bouncing_ball",
-            &mut std::io::stdout(),
-        );
-        return ExitCode::SUCCESS;
+    match args.command {
+        Some(Command::Completions { shell }) => {
+            let mut out = std::io::stdout();
+            clap_complete::generate(shell, &mut command(), "bouncing_ball", &mut out);
+            return ExitCode::SUCCESS;
+        }
+        Some(Command::Sweep {
+            values,
+            scene,
+            gif,
+            png,
+            run,
+            ..
+        }) => {
+            let outputs = SweepOutputs {
+                gif,
+                png,
+                progress: !run.quiet,
+                scene_file: scene.scene.clone(),
+                budget: run.budget.budget(),
+                stop,
+            };
+            return run_sweep(&values, &scene, &outputs);
+        }
+        Some(Command::Compare(compare)) => return compare_methods(compare, stop),
+        None => {}
     }
     let scene = match args.scene.scene() {
         Ok(scene) => scene,
@@ -326,19 +324,15 @@ fn main() -> ExitCode {
     let outputs = Outputs {
         trace: args.trace.clone(),
         plot: args.plot.clone().or_else(|| scene.plot.clone()),
-        progress: !args.quiet,
+        progress: !args.run.quiet,
         scene_file: args.scene.scene.clone(),
-        budget: Budget {
-            memory: args.memory_budget.saturating_mul(1 << 20),
-            seconds: args.time_budget as f64,
-            gif_bytes: args.gif_budget.saturating_mul(1 << 20),
-        },
+        budget: args.run.budget.budget(),
         stop,
         ..Outputs::new(&args.gif, &args.png)
     };
     match run(&scene, &outputs) {
         Ok(summary) => {
-            if !args.quiet {
+            if !args.run.quiet {
                 let line = summary_line(&summary);
                 // Standard output may carry the trace, or be a closed pipe: never fail on it.
                 let _ = if outputs.trace_on_stdout() {
@@ -349,18 +343,103 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
+        Err(error) => fail(&error, |name| match name {
+            "plot" => args.plot.is_some(),
+            setting => args.scene.settings.is_typed(setting),
+        }),
+    }
+}
+
+/// `sweep KEY=V1,V2,...`: the scene once per value, as if each were typed, tiled into one GIF.
+fn run_sweep(values: &str, args: &SceneArgs, outputs: &SweepOutputs) -> ExitCode {
+    let typed = |name: &str| match name {
+        "preset" => args.preset.is_some() || args.scene.is_some(),
+        setting => args.settings.is_typed(setting),
+    };
+    let sweep = match Sweep::parse(values) {
+        Ok(sweep) => sweep,
         Err(error) => {
-            match &error {
-                RunError::Invalid(bad) => {
-                    let typed = |name: &str| match name {
-                        "plot" => args.plot.is_some(),
-                        setting => args.scene.settings.is_typed(setting),
-                    };
-                    eprintln!("error: {}", refuse_value(bad, typed))
-                }
-                other => eprintln!("error: {other}"),
-            }
-            ExitCode::from(error.exit_code())
+            eprintln!("error: {error}");
+            return ExitCode::from(2);
         }
+    };
+    if args
+        .scene
+        .as_deref()
+        .is_some_and(bouncing_ball::output::is_stdout)
+    {
+        eprintln!("error: --scene -: a sweep reads its scene once per panel; give a file, not standard input");
+        return ExitCode::from(2);
+    }
+    let result = sweep
+        .panels(typed, |change| args.changed(change))
+        .and_then(|panels| sweep::run(&panels, outputs));
+    match result {
+        Ok(summary) => {
+            if outputs.progress {
+                // Standard output may be a closed pipe: never fail on it.
+                let _ = writeln!(std::io::stdout(), "{}", summary_line(&summary));
+            }
+            ExitCode::SUCCESS
+        }
+        Err(SweepError::Flag(error)) => refuse(error),
+        Err(SweepError::Run(error)) => fail(&error, |name| name == sweep.setting() || typed(name)),
+        Err(other) => {
+            eprintln!("error: {other}");
+            ExitCode::from(other.exit_code())
+        }
+    }
+}
+
+/// `compare`: runs the scene by every method, prints the table and what was written.
+fn compare_methods(args: Box<CompareArgs>, stop: Stop) -> ExitCode {
+    let CompareArgs {
+        scene: scene_args,
+        methods,
+        gif,
+        png,
+        table,
+        plot,
+        run,
+        ..
+    } = *args;
+    // Each method sets these three; typed for the scene they would be silently replaced.
+    for name in ["integrator", "substeps", "collisions"] {
+        if scene_args.settings.is_typed(name) {
+            eprintln!("error: {} is not allowed with compare: each method sets it; list them with --methods INTEGRATOR:SUBSTEPS:COLLISIONS", flag(name));
+            return ExitCode::from(2);
+        }
+    }
+    let scene = match scene_args.scene() {
+        Ok(scene) => scene,
+        Err(error) => {
+            eprintln!("error: {error}");
+            return ExitCode::from(2);
+        }
+    };
+    let plot_typed = plot.is_some();
+    let outputs = compare::CompareOutputs {
+        methods,
+        gif,
+        png,
+        table,
+        plot,
+        scene_file: scene_args.scene.clone(),
+        budget: run.budget.budget(),
+        stop,
+    };
+    match compare::compare(&scene, &outputs) {
+        Ok(done) => {
+            if !run.quiet {
+                let line = summary_line(&done.summary);
+                // A closed pipe (`| head`) is no reason to fail once the files are written.
+                let _ = writeln!(std::io::stdout(), "{}{line}", done.table);
+            }
+            ExitCode::SUCCESS
+        }
+        Err(error) => fail(&error, |name| match name {
+            "plot" => plot_typed,
+            setting => scene_args.settings.is_typed(setting),
+        }),
     }
 }

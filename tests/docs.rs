@@ -3,6 +3,8 @@
 
 use std::path::Path;
 
+mod common;
+
 use bouncing_ball::scene::file as scene_file;
 
 fn doc(name: &str) -> String {
@@ -87,4 +89,169 @@ fn the_gif_page_quotes_the_size_of_every_preset_gif_as_it_is() {
         checked += 1;
     }
     assert_eq!(checked, scene_file::PRESETS.len());
+}
+
+#[test]
+fn the_readme_and_help_save_completions_in_the_same_place() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let help = std::process::Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
+        .arg("--help")
+        .output()
+        .unwrap();
+    let help = String::from_utf8_lossy(&help.stdout);
+    // The command that saves the bash script, as each of them writes it.
+    let saving = |text: &str| -> Option<String> {
+        let start = text.find("bouncing_ball completions bash > ")?;
+        let rest = &text[start..];
+        Some(rest[..rest.find('`')?].to_string())
+    };
+    let (in_readme, in_help) = (saving(&readme), saving(&help));
+    assert!(
+        in_readme.is_some(),
+        "README.md does not say where to save the bash completions"
+    );
+    assert_eq!(
+        in_readme, in_help,
+        "README.md and --help give different places for the completion script"
+    );
+    assert!(
+        readme.contains("cargo install --path .") && help.contains("cargo install --path ."),
+        "README.md and --help must both say the completions are for an installed binary"
+    );
+}
+
+/// A time measured on some machine: `17.2 s`, `0.187 ms`, `60 ns`, `58,000 frames/s`. A table's
+/// unit column (`| 30 | ms |`, a setting) is not one: a time is a number and its unit together.
+fn quotes_a_timing(text: &str) -> bool {
+    let number = |w: &str| {
+        let w = w.trim_start_matches(['~', '≈', '<', '>', '(']);
+        w.starts_with(|c: char| c.is_ascii_digit())
+            && w.chars().all(|c| c.is_ascii_digit() || ".,–-".contains(c))
+    };
+    let unit = |w: &str| {
+        let w = w.trim_end_matches(['.', ',', ';', ':', ')']);
+        ["s", "ms", "µs", "us", "ns", "frames/s", "min"].contains(&w)
+    };
+    let glued = |w: &str| {
+        ["ms", "µs", "ns"].iter().any(|u| {
+            w.strip_suffix(u).is_some_and(|n| {
+                n.starts_with(|c: char| c.is_ascii_digit())
+                    && n.chars().all(|c| c.is_ascii_digit() || c == '.')
+            })
+        })
+    };
+    text.split('|').any(|cell| {
+        let words: Vec<&str> = cell.split_whitespace().collect();
+        // `0.187 ms`, `60ns`, or a column of them: `ns per ball-frame`.
+        words
+            .windows(2)
+            .any(|pair| (number(pair[0]) && unit(pair[1])) || (unit(pair[0]) && pair[1] == "per"))
+            || words.iter().any(|w| glued(w))
+    })
+}
+
+#[test]
+fn every_timing_in_the_docs_says_where_and_when_it_was_measured() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut pages = vec![root.join("README.md")];
+    for entry in std::fs::read_dir(root.join("docs")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "md") {
+            pages.push(path);
+        }
+    }
+    pages.sort();
+    let mut unmarked = Vec::new();
+    for page in pages {
+        let text = std::fs::read_to_string(&page).unwrap();
+        // A section runs from one heading to the next; its measurements are marked once in it.
+        for section in text.split("\n#") {
+            let flat = section.split_whitespace().collect::<Vec<_>>().join(" ");
+            let marked = flat.contains("Measured 20") || flat.contains("measured 20");
+            if quotes_a_timing(section) && !marked {
+                let heading = section.lines().next().unwrap_or("").trim_start_matches('#');
+                unmarked.push(format!(
+                    "{}: {}",
+                    page.file_name().unwrap().to_string_lossy(),
+                    heading.trim()
+                ));
+            }
+        }
+    }
+    assert!(
+        unmarked.is_empty(),
+        "these sections quote a time without saying when and where it was measured (write \
+         \"Measured YYYY-MM-DD on <machine>, load <L>\" in the section):\n{}",
+        unmarked.join("\n")
+    );
+}
+
+#[test]
+fn the_readme_answers_the_reflection_questions_with_the_programs_numbers() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let readme = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    let quoted = |figure: String| {
+        assert!(
+            readme.contains(&figure),
+            "README.md should say `{figure}`, which is what the run gives now"
+        );
+    };
+    let list = |items: Vec<String>| items.join(", ");
+    // The frames where the ball leaves the floor (y 228) going up, and its speed then.
+    let bounces = |rows: &[[f64; 6]]| -> Vec<[f64; 6]> {
+        rows.windows(2)
+            .filter(|w| w[0][5] > 0.0 && w[1][5] < 0.0 && w[1][3] == 228.0)
+            .map(|w| w[1])
+            .collect()
+    };
+
+    // 1. The default scene's bounces, and where a long run settles.
+    let rows = common::lesson_trace(&[]);
+    let first = bounces(&rows);
+    quoted(
+        format!(
+            "the floor only {} times (frames {}) and leaves with vy = {} px/frame",
+            first.len(),
+            list(first.iter().map(|r| r[0].to_string()).collect()),
+            list(first.iter().map(|r| format!("{:.2}", r[5])).collect()),
+        )
+        .replace('-', "−"),
+    );
+    let long = common::lesson_trace(&["--frames", "2000"]);
+    let last_100 = &long[long.len() - 100..];
+    assert!(
+        last_100.iter().all(|r| r[3] == 228.0),
+        "README.md says y is 228 in every one of the last 100 frames of --frames 2000"
+    );
+    let settled = last_100.iter().map(|r| r[5]).fold(0.0, f64::min);
+    quoted(format!("vy settles at −e·g/(1 + e) = {:.3} px/frame", settled).replace('-', "−"));
+
+    // 2. A straight drop.
+    let drop = common::lesson_trace(&["--vx", "0", "--vy", "5.2"]);
+    assert!(
+        drop.iter().all(|r| r[2] == 40.0),
+        "x must stay 40 in a straight drop"
+    );
+    let hit = bounces(&drop)[0];
+    quoted(
+        format!(
+            "first hits the floor in frame {} (vy {:.2})",
+            hit[0], hit[5]
+        )
+        .replace('-', "−"),
+    );
+
+    // 3. How far the ball moves in a frame: the gap a trail one step behind would show.
+    let mut steps: Vec<f64> = rows
+        .windows(2)
+        .map(|w| (w[1][2] - w[0][2]).hypot(w[1][3] - w[0][3]))
+        .collect();
+    steps.sort_by(f64::total_cmp);
+    quoted(format!(
+        "{:.1} px on the median frame of the default scene and up to {:.0} px just after a bounce",
+        steps[steps.len() / 2],
+        steps[steps.len() - 1]
+    ));
 }

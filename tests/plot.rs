@@ -3,36 +3,8 @@
 
 mod common;
 
-use std::path::Path;
-use std::process::{Command, Output};
-
 use bouncing_ball::plot::record::Recording;
-use common::lesson_scene;
-
-fn run_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
-
-/// The `frame,ball,x,y,vx,vy` rows of a trace, as numbers.
-fn trace_rows(path: &Path) -> Vec<[f64; 6]> {
-    std::fs::read_to_string(path)
-        .unwrap()
-        .lines()
-        .skip(1)
-        .map(|line| {
-            let v: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
-            [v[0], v[1], v[2], v[3], v[4], v[5]]
-        })
-        .collect()
-}
+use common::{lesson_scene, lesson_trace, run_in, stderr, trace_rows};
 
 /// Every `<polyline>` of an SVG: its stroke colour and its points, px.
 fn polylines(svg: &str) -> Vec<(String, Vec<(f64, f64)>)> {
@@ -407,4 +379,85 @@ fn a_scene_file_can_ask_for_a_plot_and_the_flag_overrides_it() {
     );
     assert!(output.status.success(), "{}", stderr(&output));
     assert!(dir.path().join("flag.png").is_file());
+}
+
+/// Energy per unit mass of the default scene's ball: kinetic plus g times its height above
+/// the floor (the floor the 12-px ball rests on is y = 228), px²/frame².
+fn lesson_energy(row: &[f64; 6]) -> f64 {
+    0.5 * (row[4] * row[4] + row[5] * row[5]) + 0.5 * (228.0 - row[3])
+}
+
+#[test]
+fn the_plot_page_quotes_each_of_its_runs_as_the_program_runs_it() {
+    let page =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/plots.md")).unwrap();
+    // Where the lines break does not matter.
+    let page = page.split_whitespace().collect::<Vec<_>>().join(" ");
+    let quoted = |figure: String| {
+        assert!(
+            page.contains(&figure),
+            "docs/plots.md should say `{figure}`, which is what the run gives now"
+        );
+    };
+
+    // The default scene: the frames where the ball leaves the floor going up.
+    let rows = lesson_trace(&[]);
+    let bounces: Vec<String> = rows
+        .windows(2)
+        .filter(|w| w[0][5] > 0.0 && w[1][5] < 0.0 && w[1][3] == 228.0)
+        .map(|w| format!("{}", w[1][0]))
+        .collect();
+    let (last, rest) = bounces.split_last().unwrap();
+    quoted(format!("bounces at frames {} and {last}", rest.join(", ")));
+
+    // The elastic goal: every apex after the first bounce at the same height.
+    let rows = lesson_trace(&["--damping", "1"]);
+    let first_bounce = rows.iter().position(|r| r[5] < 0.0).unwrap();
+    let apexes: Vec<f64> = rows[first_bounce..]
+        .windows(2)
+        .filter(|w| w[0][5] < 0.0 && w[1][5] >= 0.0)
+        .map(|w| w[0][3].min(w[1][3]))
+        .collect();
+    assert!(
+        apexes.len() >= 2,
+        "the elastic ball bounced only {} times",
+        apexes.len()
+    );
+    assert!(
+        apexes.iter().all(|&y| y == apexes[0]),
+        "the elastic apexes differ: {apexes:?}"
+    );
+    quoted(format!(
+        "every apex is {} px above the floor (y {})",
+        228.0 - apexes[0],
+        apexes[0]
+    ));
+
+    // The lost apex: the energy left once the ball runs along the floor.
+    let rows = lesson_trace(&["--damping", "1", "--vy", "0.3", "--frames", "2000"]);
+    let late: Vec<f64> = rows[1600..].iter().map(lesson_energy).collect();
+    let (low, high) = late
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(lo, hi), &e| (lo.min(e), hi.max(e)));
+    quoted(format!(
+        "swings between {low:.3} and {high:.3} px²/frame² from frame 1600 on"
+    ));
+
+    // Exact collisions with velocity Verlet: the energy, and how far it strays (rounding).
+    let rows = lesson_trace(&[
+        "--damping",
+        "1",
+        "--collisions",
+        "exact",
+        "--integrator",
+        "velocity-verlet",
+    ]);
+    let start = lesson_energy(&rows[0]);
+    let drift = rows
+        .iter()
+        .map(|r| ((lesson_energy(r) - start) / start).abs())
+        .fold(0.0, f64::max);
+    quoted(format!(
+        "{start:.2} px²/frame² in every frame, to {drift:.1e} relative"
+    ));
 }

@@ -238,8 +238,10 @@ def main():
     a = p.parse_args()
     if a.command == "gif":
         if not a.out.is_dir():
-            p.error(f"gif: {a.out} is not a folder; give the folder to write "
-                    "bouncing_ball.gif and bouncing_ball.png into")
+            # One line, as the program says it (argparse's error adds a usage line).
+            print(f"error: lesson.py gif {a.out}: not a folder; give the folder to write "
+                  "bouncing_ball.gif and bouncing_ball.png into", file=sys.stderr)
+            sys.exit(2)
         write_gif(constants(a.scene), a.out)
     elif a.command == "trajectory":
         print_trajectory(constants(a.scene))

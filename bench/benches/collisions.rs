@@ -5,13 +5,17 @@
 //! 100,000 balls at packing fraction 0.3 (the balls cover 30 % of the box). Criterion
 //! reports the time per frame and, as "elements", ball-steps per second; the cost per ball
 //! should stay flat as N grows. A second group times a frame of the `pile` preset (150
-//! balls heaped under gravity), once it has settled.
+//! balls heaped under gravity) once it has settled, by the contact solver and in exact
+//! mode; a third times a frame of presets that never rest (`billiards`: the contact solver
+//! without gravity; `many`: balls that never meet), so that what rest saves is not paid for
+//! where nothing rests.
 //!
 //! Run: `RAYON_NUM_THREADS=1 cargo bench -p bouncing_ball_bench --bench collisions` (about
 //! 30 s; the physics is single-threaded either way).
 
 use std::time::Duration;
 
+use bouncing_ball::physics::motion::CollisionMode;
 use bouncing_ball::scene::file::preset;
 use bouncing_ball::scene::random::Random;
 use bouncing_ball::Scene;
@@ -51,15 +55,33 @@ const SETTLING_FRAMES: u32 = 1_000;
 
 fn pile(c: &mut Criterion) {
     let mut group = c.benchmark_group("frame_of_settled_pile");
-    let scene = preset("pile", 1).expect("the pile preset");
-    group.throughput(Throughput::Elements(scene.balls.len() as u64));
-    group.bench_function(BenchmarkId::from_parameter(scene.balls.len()), |bencher| {
-        let mut simulation = scene.simulation();
-        for _ in 0..SETTLING_FRAMES {
-            simulation.step();
-        }
-        bencher.iter(|| simulation.step());
-    });
+    for collisions in [CollisionMode::Clamp, CollisionMode::Exact] {
+        let mut scene = preset("pile", 1).expect("the pile preset");
+        scene.motion.collisions = collisions;
+        group.throughput(Throughput::Elements(scene.balls.len() as u64));
+        let name = format!("{collisions:?}").to_lowercase();
+        group.bench_function(BenchmarkId::new(name, scene.balls.len()), |bencher| {
+            let mut simulation = scene.simulation();
+            for _ in 0..SETTLING_FRAMES {
+                simulation.step();
+            }
+            bencher.iter(|| simulation.step());
+        });
+    }
+    group.finish();
+}
+
+/// A frame of presets whose balls never rest, from their start.
+fn restless(c: &mut Criterion) {
+    let mut group = c.benchmark_group("frame_of_restless_preset");
+    for name in ["billiards", "many"] {
+        let scene = preset(name, 1).expect("the preset");
+        group.throughput(Throughput::Elements(scene.balls.len() as u64));
+        group.bench_function(name, |bencher| {
+            let mut simulation = scene.simulation();
+            bencher.iter(|| simulation.step());
+        });
+    }
     group.finish();
 }
 
@@ -69,6 +91,6 @@ criterion_group! {
         .sample_size(10)
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(3));
-    targets = collisions, pile
+    targets = collisions, pile, restless
 }
 criterion_main!(benches);

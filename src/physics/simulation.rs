@@ -157,6 +157,16 @@ impl Simulation {
         }
     }
 
+    /// How many balls sleep: resting balls the solver no longer moves (the contact solver's
+    /// sleeping islands, exact mode's sleep rule). The lesson's step never lets a ball sleep.
+    pub fn sleeping_balls(&self) -> usize {
+        match &self.stepper {
+            Stepper::Contacts(contacts) => contacts.sleeping(),
+            Stepper::Events(events) => events.sleeping(),
+            Stepper::Lesson { .. } | Stepper::Apart => 0,
+        }
+    }
+
     /// The balls as they are now, in scene order.
     pub fn balls(&self) -> &[Ball] {
         &self.balls

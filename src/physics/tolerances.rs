@@ -61,6 +61,24 @@ pub const SLOP: f64 = 0.005;
 /// Baumgarte factor): all of it at once overshoots where many contacts push on one ball.
 pub const PUSH: f64 = 0.2;
 
+// ---- Sleep (the contact solver) ----
+
+/// Speed below which a ball counts as still, px/frame (at [`LESSON_GRAVITY`]; it scales with
+/// the scene's gravity, and without gravity nothing sleeps). Box2D v3 puts a body to sleep
+/// below 0.05 m/s (its `sleepThreshold`), which is 0.085 px/frame at the lesson's scale: a
+/// sixth of what gravity adds in one frame, so a ball that falls, bounces or is pushed is
+/// never still for long; far above the hundredths of a pixel a frame a settled pile trembles
+/// by. (rapier's threshold is higher: 0.4 m/s, 0.68 px/frame.)
+pub const SLEEP_SPEED: f64 = 0.085;
+
+/// How long every ball of an island must stay below [`SLEEP_SPEED`] before the island
+/// sleeps, frames: rapier's `time_until_sleep`, 2 s, at the lesson's 30 ms a frame. Box2D
+/// waits 0.5 s (17 frames), which is enough for bodies with friction; frictionless balls
+/// creep. In the `pile` preset a ball wedged between the wall and the balls below slides off
+/// at under 0.04 px/frame for 25 frames, then falls 12 px: after 17 calm frames the pile
+/// would sleep with it still up there, after 67 it has fallen.
+pub const SLEEP_FRAMES: u32 = 67;
+
 // ---- Limits: work and memory bounded whatever the scene ----
 
 /// The most bounces resolved exactly in one step of one ball (walls and floors).
@@ -82,3 +100,10 @@ pub const TOUCHES_PER_CONTACT: usize = 4;
 /// A grid never has more than about this many cells per ball: when balls are spread thin
 /// the cells grow instead, so memory and the time spent visiting empty cells stay O(N).
 pub const MAX_CELLS_PER_BALL: f64 = 4.0;
+
+// ---- Comparing methods (`bouncing_ball compare`) ----
+
+/// How closely two runs of the reference (RK4, exact collisions) with the second's substeps
+/// doubled must agree, px, at every ball in every frame, for the finer to be the reference: far
+/// below a pixel, and a thousand times below the error of the best method worth comparing.
+pub const REFERENCE_AGREEMENT: f64 = 1e-9;

@@ -139,6 +139,12 @@ macro_rules! settings {
                 })*
             }
 
+            /// These values, and `other`'s where these have none (a sweep's value over the
+            /// typed flags).
+            pub fn or(&self, other: &Overrides) -> Overrides {
+                Overrides {$($name: self.$name.or(other.$name),)*}
+            }
+
             /// Whether the setting `name` (`frame_ms`) was typed.
             pub fn is_typed(&self, name: &str) -> bool {
                 match name {

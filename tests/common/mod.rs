@@ -5,6 +5,7 @@
 pub mod process;
 
 use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
 
 use bouncing_ball::render::{to_rgb, Renderer};
 use bouncing_ball::{BallSpec, Scene};
@@ -219,4 +220,41 @@ pub fn white_ball(x: f64, y: f64, vx: f64, vy: f64, radius: f64) -> BallSpec {
         trail_colour: [255, 255, 255],
         trail: 0,
     }
+}
+
+/// The program, run in `dir` with `args`.
+pub fn run_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the binary runs")
+}
+
+/// What a run printed on stderr.
+pub fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// The `frame,ball,x,y,vx,vy` rows of a trace, as numbers.
+pub fn trace_rows(path: &Path) -> Vec<[f64; 6]> {
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|line| {
+            let v: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+            [v[0], v[1], v[2], v[3], v[4], v[5]]
+        })
+        .collect()
+}
+
+/// The trace of the default scene with `extra` flags, run in a temporary folder.
+pub fn lesson_trace(extra: &[&str]) -> Vec<[f64; 6]> {
+    let dir = tempfile::tempdir().unwrap();
+    let mut args = vec!["-q", "--trace", "run.csv"];
+    args.extend_from_slice(extra);
+    let output = run_in(dir.path(), &args);
+    assert!(output.status.success(), "{}", stderr(&output));
+    trace_rows(&dir.path().join("run.csv"))
 }

@@ -11,8 +11,11 @@
 //! - [`solver`]: Box2D's sequential impulses for discs, iterated in sub-steps, island by
 //!   island. Its own doc lists the stages, named as Box2D v3 names them: prepare, warm start,
 //!   solve, relax, restitution, store.
+//! - [`sleep`]: islands that have come to rest sleep, and cost nothing, until an awake ball
+//!   can touch them.
 
 pub mod grid;
+pub mod sleep;
 pub mod solver;
 
 pub use grid::Grid;

@@ -49,25 +49,31 @@
 //!      the solve adds none, and the push is done here, on positions, as in Box2D v2.4.)
 //! 4. A ball that can touch nothing takes the whole step at once, as in the lesson, and the
 //!    balls are copied back into the scene, inside its walls.
-//! 5. **Restitution** (`ContactSolver::restitution`): the bounces left after the
+//! 5. **Restitution** (`Scratch::restitution`): the bounces left after the
 //!    sub-steps. Every listed contact has bounced in its solve; what is left is a pair the
 //!    step did not list (a ball struck within the step, running into a neighbour it was not
 //!    heading for), which is set apart to touching and bounces now.
 //! 6. **Store** (`ContactSolver::store`): each contact's impulse goes into the warm-start
 //!    memory for the next step.
+//! 7. **Sleep** (`ContactSolver::fall_asleep`): an island whose balls have all been slow for
+//!    long enough sleeps (`super::sleep` has the rule). A sleeping ball takes no part in the
+//!    stages above until an awake ball can touch it, which the grid's pairs show in step 1,
+//!    and a step in which every ball sleeps does nothing at all.
 //!
 //! Everything happens in a fixed order (the grid's), so the same balls give the same bytes.
 
 use std::ops::Range;
 
 use super::grid::Grid;
+use super::sleep::Sleep;
 use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
 use crate::physics::integrate::integrator::{Forces, Movable};
 use crate::physics::maths;
 use crate::physics::motion::Motion;
 use crate::physics::tolerances::{
-    LESSON_GRAVITY, MAX_PAIRS_PER_BALL, PAIR_MARGIN, PUSH, REST_SPEED, SLOP, TOUCHES_PER_CONTACT,
+    LESSON_GRAVITY, MAX_PAIRS_PER_BALL, PAIR_MARGIN, PUSH, REST_SPEED, SLEEP_FRAMES, SLEEP_SPEED,
+    SLOP, TOUCHES_PER_CONTACT,
 };
 use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
@@ -140,6 +146,8 @@ struct Stepping<'a> {
     sub: SubStep,
     /// Whether no gravity or drag acts, so every ball flies straight between contacts.
     free: bool,
+    /// Below this speed, px/frame, a ball counts as still (0 without gravity: nothing sleeps).
+    sleep_speed: f64,
 }
 
 impl Stepping<'_> {
@@ -159,6 +167,7 @@ impl Stepping<'_> {
                 rest_speed: REST_SPEED * gravity / LESSON_GRAVITY,
             },
             free: whole.gravity.is_none() && whole.drag.is_none(),
+            sleep_speed: SLEEP_SPEED * gravity / LESSON_GRAVITY,
         }
     }
 }
@@ -193,6 +202,15 @@ impl Lookahead {
     /// within the step, with `slack` to spare.
     fn can_touch(self, separation: f64, approach: f64, slack: f64) -> bool {
         separation + approach.min(0.0) * self.dt - self.fall < slack
+    }
+
+    /// Whether balls `a` and `b`, `gap` apart, can touch within the step.
+    fn pair_can_touch(self, a: &Body, b: &Body, gap: Gap) -> bool {
+        let approach = (b.velocity - a.velocity).dot(gap.normal);
+        // Both balls fall alike, but a ball pushed from above can close the gap by as much
+        // as gravity moves it.
+        let slack = PAIR_MARGIN * (a.radius + b.radius) / 2.0;
+        self.can_touch(gap.separation, approach, slack)
     }
 }
 
@@ -247,6 +265,7 @@ struct Gap {
 pub struct ContactSolver {
     settings: Settings,
     memory: WarmStartMemory,
+    sleep: Sleep,
     scratch: Scratch,
 }
 
@@ -275,7 +294,7 @@ struct Scratch {
     /// The pairs the grid finds, as places in its order.
     places: Vec<[u32; 2]>,
     /// Of those, the pairs that could not touch as the step began (see
-    /// `ContactSolver::restitution`).
+    /// `Scratch::restitution`).
     unlisted: Vec<[u32; 2]>,
     /// This step's contacts, island by island once sorted.
     pairs: Vec<PairContact>,
@@ -293,6 +312,8 @@ struct Scratch {
     spare_fixed: Vec<FixedContact>,
     /// The balls (of `local`) without a contact this step, at its start.
     untouched: Vec<usize>,
+    /// Whether each ball (of `local`) sleeps this step; empty while none sleeps.
+    asleep: Vec<bool>,
     /// Where an island's balls were (position, velocity), for when it cannot be solved
     /// touch by touch.
     saved: Vec<(Vec2, Vec2)>,
@@ -331,6 +352,9 @@ fn place(range: &mut Range<usize>) -> usize {
 /// `island_of` for a ball without contacts.
 const NO_ISLAND: usize = usize::MAX;
 
+/// `island_of` for a ball that sleeps (it has no contacts either, and does not move).
+const ASLEEP: usize = usize::MAX - 1;
+
 /// The ball that names `ball`'s island in the union–find tree `parent` (the island's first
 /// ball), halving the path on the way so later searches are short.
 fn root(parent: &mut [usize], mut ball: usize) -> usize {
@@ -347,15 +371,25 @@ impl ContactSolver {
         ContactSolver {
             settings: Settings { restitution },
             memory: WarmStartMemory::default(),
+            sleep: Sleep::default(),
             scratch: Scratch::default(),
         }
+    }
+
+    /// How many balls sleep now (`super::sleep`).
+    pub fn sleeping(&self) -> usize {
+        self.sleep.sleeping()
     }
 
     /// Advances every ball one frame (its substeps) under `effects`, with `motion`'s
     /// integrator and iterations; trails are the caller's business.
     pub fn step(&mut self, scene_balls: &mut [Ball], effects: &Effects, motion: &Motion) {
         let stepping = Stepping::new(effects, motion);
+        self.sleep.fit(scene_balls.len());
         for _ in 0..stepping.steps {
+            if self.sleep.everyone_asleep() {
+                return; // nothing awake to move, or to wake anything
+            }
             tally(Work::Contacts);
             self.prepare(scene_balls, effects, stepping.dt);
             // The solver works on its own copy of the balls, in the grid's order: contacts
@@ -368,58 +402,62 @@ impl ContactSolver {
             for (copy, &i) in local.iter_mut().zip(order) {
                 copy_back(copy, &mut scene_balls[i], walls);
             }
-            self.restitution(&mut local, stepping.sub, |copy, k| {
-                copy_back(copy, &mut scene_balls[order[k]], walls);
-            });
+            let sleep = &mut self.sleep;
+            let restitution = self.settings.restitution;
+            self.scratch
+                .restitution(&mut local, restitution, stepping.sub, |copy, k| {
+                    copy_back(copy, &mut scene_balls[order[k]], walls);
+                    sleep.wake(order[k]); // it moved: its island wakes
+                });
             self.scratch.local = local;
             self.store();
+            self.fall_asleep(scene_balls, &stepping);
         }
     }
 
     /// Prepares the step `dt`: finds its contacts, gives each the impulse it ended the last
-    /// step with, and sorts them into islands.
+    /// step with, and sorts them into islands. Sleeping balls take no part, but an island an
+    /// awake ball can touch wakes first.
     fn prepare(&mut self, balls: &[Ball], effects: &Effects, dt: f64) {
         let scratch = &mut self.scratch;
-        scratch.find(balls, effects, dt, self.settings.restitution);
+        let restitution = self.settings.restitution;
+        scratch.find(balls, effects, dt, restitution, &mut self.sleep);
+        self.memory.keep(self.sleep.woken());
         self.memory.recall(&mut scratch.pairs, &mut scratch.fixed);
         scratch.sort_into_islands(balls.len());
     }
 
-    /// The bounces left after the sub-steps. A ball struck within the step leaves in a new
-    /// direction and can run into a neighbour it was not heading for when the contacts were
-    /// found: that pair is not among them. Each such pair that ends the step overlapping
-    /// beyond the slop is set apart to touching (positions only) and bounces now, by the
-    /// same rule as any contact, so that no overlap outlives the step. Momentum is kept and
-    /// kinetic energy does not rise. `moved` hears of each ball it moves (by its place).
-    fn restitution(&self, balls: &mut [Body], sub: SubStep, mut moved: impl FnMut(&Body, usize)) {
-        let order = self.scratch.grid.order();
-        for &[a, b] in &self.scratch.unlisted {
-            let (a, b) = (a as usize, b as usize);
-            let (ball_a, ball_b) = (&balls[a], &balls[b]);
-            if !deeper_than_slop(ball_a, ball_b, ball_a.radius + ball_b.radius) {
-                continue; // the common case, without a square root
-            }
-            let gap = gap_between(balls, order, a, b);
-            let restitution = self.settings.restitution;
-            let mut contact = pair_contact(balls, order, restitution, a, b, gap);
-            let pair = ContactSet {
-                balls: &[],
-                pairs: std::slice::from_mut(&mut contact),
-                fixed: &mut [],
-            };
-            pair.relax(balls, Push::Whole);
-            contact.state.separation = 0.0;
-            let (ball_a, ball_b) = two(balls, a, b);
-            contact.solve_velocity(ball_a, ball_b, sub);
-            moved(ball_a, a);
-            moved(ball_b, b);
-        }
-    }
-
-    /// Stores each contact's impulse in the warm-start memory, for the next step.
+    /// Stores each contact's impulse in the warm-start memory, for the next step, and the
+    /// kept impulses of islands the restitution woke.
     fn store(&mut self) {
         let scratch = &self.scratch;
         self.memory.store(&scratch.pairs, &scratch.fixed);
+        self.memory.keep(self.sleep.woken());
+    }
+
+    /// Counts each awake ball's calm steps, and puts to sleep each island of the step whose
+    /// balls have all been calm for [`SLEEP_FRAMES`] (the rule: `super::sleep`).
+    fn fall_asleep(&mut self, balls: &mut [Ball], stepping: &Stepping) {
+        if stepping.sleep_speed == 0.0 {
+            return; // without gravity nothing sleeps
+        }
+        self.sleep.count_calm_steps(balls, stepping.sleep_speed);
+        let needed = SLEEP_FRAMES * stepping.steps;
+        let scratch = &self.scratch;
+        let order = scratch.grid.order();
+        for island in &scratch.islands {
+            let members = scratch.active[island.balls.clone()]
+                .iter()
+                .map(|&k| order[k]);
+            if !members.clone().all(|i| self.sleep.calm_for(i, needed)) {
+                continue;
+            }
+            let pairs = scratch.pairs[island.pairs.clone()].iter().map(|c| &c.state);
+            let fixed = scratch.fixed[island.fixed.clone()].iter().map(|c| &c.state);
+            let impulses = pairs.chain(fixed).map(|state| (state.key, state.impulse));
+            let impulses = impulses.filter(|&(_, impulse)| impulse > 0.0);
+            self.sleep.put_to_sleep(balls, members, impulses);
+        }
     }
 }
 
@@ -447,28 +485,126 @@ impl WarmStartMemory {
         );
         self.impulses.sort_unstable_by_key(|&(key, _)| key);
     }
+
+    /// Takes the `kept` impulses (of islands that woke) into those remembered.
+    fn keep(&mut self, kept: &mut Vec<(u64, f64)>) {
+        if kept.is_empty() {
+            return; // the common case: nothing woke
+        }
+        self.impulses.append(kept);
+        self.impulses.sort_unstable_by_key(|&(key, _)| key);
+        self.impulses.dedup_by_key(|&mut (key, _)| key);
+    }
 }
 
 impl Scratch {
-    /// This step's contacts, each only if it can touch within the step `dt`: each ball's
-    /// walls and floors, as the balls are copied into the grid's order; then the ball pairs
-    /// from the grid, in its order, with `restitution`.
-    fn find(&mut self, balls: &[Ball], effects: &Effects, dt: f64, restitution: f64) {
+    /// The bounces left after the sub-steps. A ball struck within the step leaves in a new
+    /// direction and can run into a neighbour it was not heading for when the contacts were
+    /// found: that pair is not among them. Each such pair that ends the step overlapping
+    /// beyond the slop is set apart to touching (positions only) and bounces now, by the
+    /// same rule as any contact, so that no overlap outlives the step. Momentum is kept and
+    /// kinetic energy does not rise. `moved` hears of each ball it moves (by its place).
+    fn restitution(
+        &self,
+        balls: &mut [Body],
+        restitution: f64,
+        sub: SubStep,
+        mut moved: impl FnMut(&Body, usize),
+    ) {
+        let order = self.grid.order();
+        for &[a, b] in &self.unlisted {
+            let (a, b) = (a as usize, b as usize);
+            let (ball_a, ball_b) = (&balls[a], &balls[b]);
+            if !deeper_than_slop(ball_a, ball_b, ball_a.radius + ball_b.radius) {
+                continue; // the common case, without a square root
+            }
+            let gap = gap_between(balls, order, a, b);
+            let mut contact = pair_contact(balls, order, restitution, a, b, gap);
+            let pair = ContactSet {
+                balls: &[],
+                pairs: std::slice::from_mut(&mut contact),
+                fixed: &mut [],
+            };
+            pair.relax(balls, Push::Whole);
+            contact.state.separation = 0.0;
+            let (ball_a, ball_b) = two(balls, a, b);
+            contact.solve_velocity(ball_a, ball_b, sub);
+            moved(ball_a, a);
+            moved(ball_b, b);
+        }
+    }
+
+    /// This step's contacts, each only if it can touch within the step `dt`: each awake
+    /// ball's walls and floors, as the balls are copied into the grid's order; then the ball
+    /// pairs from the grid, in its order, with `restitution`. First the grid's pairs wake
+    /// each sleeping island an awake ball can touch.
+    fn find(
+        &mut self,
+        balls: &[Ball],
+        effects: &Effects,
+        dt: f64,
+        restitution: f64,
+        sleep: &mut Sleep,
+    ) {
         let lookahead = Lookahead::new(effects, dt);
         self.grid
             .rebuild_with_margins(balls, |ball| lookahead.margin(ball));
-        self.copy_and_find_fixed(balls, effects, lookahead);
+        let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
+        self.grid.overlapping_places(&mut self.places, limit);
+        if sleep.anyone_asleep() {
+            self.wake_touched(balls, lookahead, sleep);
+        }
+        self.copy_and_find_fixed(balls, effects, lookahead, sleep);
         self.find_pairs(lookahead, restitution);
     }
 
+    /// Wakes each sleeping island that an awake ball can touch within the step, and then
+    /// those its balls can touch, until none is left to wake.
+    fn wake_touched(&self, balls: &[Ball], lookahead: Lookahead, sleep: &mut Sleep) {
+        let order = self.grid.order();
+        let mut woke = true;
+        while woke {
+            woke = false;
+            for &[a, b] in &self.places {
+                let (i, j) = (order[a as usize], order[b as usize]);
+                if sleep.is_asleep(i) == sleep.is_asleep(j) {
+                    continue;
+                }
+                let (ball_a, ball_b) = (Body::of(&balls[i]), Body::of(&balls[j]));
+                let gap = pair_gap(&ball_a, &ball_b, ball_a.radius + ball_b.radius, || {
+                    coincident_normal(i.max(j))
+                });
+                if lookahead.pair_can_touch(&ball_a, &ball_b, gap) {
+                    woke |= sleep.wake(i) | sleep.wake(j);
+                }
+            }
+        }
+    }
+
     /// Copies each ball into `local` in the grid's order, and finds its walls and floors,
-    /// in one pass.
-    fn copy_and_find_fixed(&mut self, balls: &[Ball], effects: &Effects, lookahead: Lookahead) {
+    /// in one pass. A sleeping ball is copied but has no contact; while any ball sleeps,
+    /// `asleep` marks each (it is left empty otherwise: a scene where none sleeps pays
+    /// nothing for it).
+    fn copy_and_find_fixed(
+        &mut self,
+        balls: &[Ball],
+        effects: &Effects,
+        lookahead: Lookahead,
+        sleep: &Sleep,
+    ) {
         self.local.clear();
         self.fixed.clear();
+        self.asleep.clear();
+        let sleepers = sleep.anyone_asleep();
         for (k, &i) in self.grid.order().iter().enumerate() {
             let ball = &Body::of(&balls[i]);
             self.local.push(*ball);
+            if sleepers {
+                self.asleep.push(sleep.is_asleep(i));
+                if sleep.is_asleep(i) {
+                    continue;
+                }
+            }
             let centre = ball.position;
             let mut touch = |id: u64, normal: Vec2, surface: f64, restitution: f64| {
                 let offset = surface + ball.radius;
@@ -522,17 +658,16 @@ impl Scratch {
         // in `local`: `a < b`, close together in memory, no lookup needed.
         self.pairs.clear();
         self.unlisted.clear();
-        let limit = MAX_PAIRS_PER_BALL.saturating_mul(balls.len());
-        self.grid.overlapping_places(&mut self.places, limit);
+        let sleepers = !self.asleep.is_empty();
         for &[a, b] in &self.places {
             let (a, b) = (a as usize, b as usize);
+            if sleepers && self.asleep[a] && self.asleep[b] {
+                continue; // two sleeping balls: neither moves
+            }
             let (ball_a, ball_b) = (&balls[a], &balls[b]);
             let gap = gap_between(balls, order, a, b);
-            let approach = (ball_b.velocity - ball_a.velocity).dot(gap.normal);
-            // Both balls fall alike, but a ball pushed from above can close the gap by as
-            // much as gravity moves it.
-            let slack = PAIR_MARGIN * (ball_a.radius + ball_b.radius) / 2.0;
-            if lookahead.can_touch(gap.separation, approach, slack) {
+            // (A sleeping ball and an awake one that can touch woke in `wake_touched`.)
+            if lookahead.pair_can_touch(ball_a, ball_b, gap) {
                 let contact = pair_contact(balls, order, restitution, a, b, gap);
                 self.pairs.push(contact);
             } else {
@@ -580,8 +715,9 @@ impl Scratch {
     }
 
     /// Numbers the islands of the union–find tree `parent` in the order their contacts were
-    /// found, visiting only the balls with a contact (the rest stay at `NO_ISLAND`), and
-    /// counts each island's balls and contacts (in the ends of its ranges).
+    /// found, visiting only the balls with a contact (the rest stay at `NO_ISLAND`, or at
+    /// `ASLEEP` for those that sleep), and counts each island's balls and contacts (in the
+    /// ends of its ranges).
     ///
     /// Islands share no ball and a ball's own motion does not depend on the others', so
     /// neither the islands' order nor their balls' changes a number: only each island's
@@ -589,7 +725,12 @@ impl Scratch {
     fn number_islands(&mut self, count: usize) {
         let (parent, island_of) = (&mut self.parent, &mut self.island_of);
         island_of.clear();
-        island_of.resize(count, NO_ISLAND);
+        if self.asleep.is_empty() {
+            island_of.resize(count, NO_ISLAND);
+        } else {
+            let mark = |&asleep: &bool| if asleep { ASLEEP } else { NO_ISLAND };
+            island_of.extend(self.asleep.iter().map(mark));
+        }
         self.islands.clear();
         self.with_contact.clear();
         let with_contact = self.pairs.iter().flat_map(|c| [c.a, c.b]);
@@ -638,7 +779,8 @@ impl Scratch {
         }
     }
 
-    /// A ball that can touch nothing in this step takes it in one go, as in the lesson.
+    /// A ball that can touch nothing in this step takes it in one go, as in the lesson (a
+    /// sleeping one does not move).
     /// They are listed first without a branch (about half the balls of a gas, at random,
     /// which a branch would mispredict).
     fn move_untouched(&mut self, balls: &mut [Body], stepping: &Stepping) {

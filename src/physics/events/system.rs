@@ -30,7 +30,9 @@
 //!   it is a fixed obstacle. Balls may hold each other up, so the sleepers are the largest
 //!   set of slow balls that holds itself up. Struck so hard that the rebound reaches
 //!   [`REST_SPEED`], it wakes and collides as usual. A settled pile sleeps whole and
-//!   has no events at all.
+//!   has no events at all; and once a step has found every ball asleep and resolved no
+//!   event, it has left every ball as it found it (stopped, where it was), so every later
+//!   step would do the same: none is taken, and a settled scene costs nothing.
 //! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
 //!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
 //!   ball's previous collision is elastic, so a cascade of collisions at one moment ends.
@@ -96,6 +98,9 @@ pub struct EventDriven {
     /// Whether the calendar, the grid and the clocks carry over into the next step, so that
     /// it need not predict every ball's events afresh (see `EventDriven::step`).
     carried: bool,
+    /// Whether the last step found every ball asleep and resolved no event: it changed
+    /// nothing, so no later step can (the scene is fixed and only the steps move balls).
+    settled: bool,
     counts: EventCounts,
 }
 
@@ -125,6 +130,7 @@ impl EventDriven {
             last_collision: Vec::new(),
             elapsed: 0.0,
             carried: false,
+            settled: false,
             counts: EventCounts::default(),
         }
     }
@@ -132,6 +138,11 @@ impl EventDriven {
     /// What the steps of the last frame did.
     pub fn counts(&self) -> EventCounts {
         self.counts
+    }
+
+    /// How many balls slept in the last step (the sleep rule).
+    pub fn sleeping(&self) -> usize {
+        self.asleep.iter().filter(|&&asleep| asleep).count()
     }
 
     /// Advances `balls` by one frame of `steps` steps of `forces.dt` frames.
@@ -145,6 +156,9 @@ impl EventDriven {
     ) {
         self.counts = EventCounts::default();
         for _ in 0..steps {
+            if self.settled {
+                return; // every ball sleeps, and nothing can wake one
+            }
             tally(Work::BallCollisions);
             self.step(balls, integrator, forces, effects);
         }
@@ -176,6 +190,7 @@ impl EventDriven {
             self.start(balls, &step);
         }
         let (events, end) = self.run_events(balls, &step);
+        self.settled = events == 0 && self.asleep.iter().all(|&asleep| asleep);
         let covered = self.fly_to(end, balls, &step);
         self.carried = straight && end == forces.dt && covered;
         if self.carried {

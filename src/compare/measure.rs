@@ -1,0 +1,157 @@
+//! What a comparison measures of each method: how long its physics takes per ball and frame
+//! on this machine, how far its balls stray from the reference's, and what happens to the
+//! energy.
+//!
+//! The errors and energies come from the one run that is drawn, so they are the same on every
+//! machine; only the timings depend on the clock, and they go to the table, never to the GIF.
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use crate::physics::ball::{kinetic_energy, mass};
+use crate::physics::{Ball, Vec2};
+use crate::plot::record::Recording;
+use crate::scene::Scene;
+
+use super::methods::Method;
+
+/// One repetition of the timing runs the physics over and over until it has taken this long,
+/// so the clock's resolution and the cost of reading it do not count.
+const REPETITION: Duration = Duration::from_millis(5);
+/// Repetitions timed per method, at most; fewer once [`TIMING_BUDGET`] per method is spent,
+/// but never fewer than [`MIN_REPETITIONS`].
+const MAX_REPETITIONS: usize = 9;
+const MIN_REPETITIONS: usize = 3;
+const TIMING_BUDGET: Duration = Duration::from_millis(300);
+
+/// Nanoseconds per ball per frame: the median of the repetitions, and the fastest and slowest.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Timing {
+    pub median: f64,
+    pub min: f64,
+    pub max: f64,
+}
+
+/// How long the physics of one whole run of `scene` takes (the simulation is built before
+/// the clock starts).
+fn one_run(scene: &Scene) -> Duration {
+    let mut simulation = scene.simulation();
+    let started = Instant::now();
+    for _ in 0..scene.frames {
+        simulation.step();
+    }
+    black_box(simulation.balls());
+    started.elapsed()
+}
+
+/// Times the physics of `scene` (no drawing; give it a scene without trails) solved by each
+/// of `methods`, in ns per ball-frame. The methods take turns, repetition by repetition, so a
+/// change in the machine's load falls on all of them alike.
+pub fn time_all(scene: &Scene, methods: &[Method]) -> Vec<Timing> {
+    let scenes: Vec<Scene> = methods.iter().map(|m| m.on(scene)).collect();
+    let ball_frames = scene.balls.len().max(1) as f64 * f64::from(scene.frames);
+    // How many runs make one repetition, for each method, from one run; a run that long
+    // already is the first repetition.
+    let mut samples = vec![Vec::new(); methods.len()];
+    let runs: Vec<u32> = scenes
+        .iter()
+        .zip(&mut samples)
+        .map(|(scene, samples)| {
+            let first = one_run(scene);
+            if first >= REPETITION {
+                samples.push(first.as_nanos() as f64 / ball_frames);
+                return 1;
+            }
+            let runs = REPETITION.as_nanos() / first.as_nanos().max(1) + 1;
+            runs.min(1 << 20) as u32
+        })
+        .collect();
+    let started = Instant::now();
+    let budget = TIMING_BUDGET * methods.len() as u32;
+    let enough = |samples: &[Vec<f64>], limit| samples.iter().all(|s| s.len() >= limit);
+    while !enough(&samples, MAX_REPETITIONS)
+        && (!enough(&samples, MIN_REPETITIONS) || started.elapsed() < budget)
+    {
+        for ((scene, &runs), samples) in scenes.iter().zip(&runs).zip(&mut samples) {
+            let total: Duration = (0..runs).map(|_| one_run(scene)).sum();
+            samples.push(total.as_nanos() as f64 / (f64::from(runs) * ball_frames));
+        }
+    }
+    samples
+        .into_iter()
+        .map(|mut samples| {
+            samples.sort_by(f64::total_cmp);
+            Timing {
+                median: samples[samples.len() / 2],
+                min: samples[0],
+                max: samples[samples.len() - 1],
+            }
+        })
+        .collect()
+}
+
+/// One method's results.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    pub method: Method,
+    pub timing: Timing,
+    pub stray: Stray,
+    /// See [`super::table`]'s note under the table; `None` when the scene starts with no energy.
+    pub energy_drift: Option<f64>,
+}
+
+/// A scene's mechanical energy: kinetic `Σ ½·m·|v|²` plus potential `Σ m·g·h`, with the
+/// masses of collisions (m ∝ r²) and the plot's heights (how far each ball could still fall).
+pub struct Energy {
+    heights: Recording,
+}
+
+impl Energy {
+    pub fn new(scene: &Scene) -> Energy {
+        Energy {
+            heights: Recording::new(scene),
+        }
+    }
+
+    /// The energy of `balls`, px⁴/frame² (mass in px²).
+    pub fn of(&self, balls: &[Ball]) -> f64 {
+        let potential: f64 = balls
+            .iter()
+            .map(|b| mass(b.radius) * self.heights.potential(b))
+            .sum();
+        kinetic_energy(balls) + potential
+    }
+}
+
+/// Whether `scene` keeps its energy, so a method's drift is its own error: no drag, and every
+/// wall, floor and ball-ball collision elastic.
+pub fn conserves_energy(scene: &Scene) -> bool {
+    scene.drag.is_none()
+        && scene.walls.is_none_or(|damping| damping == 1.0)
+        && scene.floors.iter().all(|floor| floor.damping == 1.0)
+        && scene
+            .ball_collisions
+            .is_none_or(|restitution| restitution == 1.0)
+}
+
+/// How far one method has strayed from the reference, frame by frame.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Stray {
+    /// The largest distance of any ball from its reference so far, px.
+    pub max_error: f64,
+    /// The first frame in which some ball was more than its radius from its reference.
+    pub parted_at: Option<u32>,
+}
+
+impl Stray {
+    /// Takes in frame `n`: the method's `balls` and the reference's `centres`.
+    pub fn frame(&mut self, n: u32, balls: &[Ball], centres: &[Vec2]) {
+        for (ball, &centre) in balls.iter().zip(centres) {
+            let error = (ball.position() - centre).length();
+            self.max_error = self.max_error.max(error);
+            if error > ball.radius && self.parted_at.is_none() {
+                self.parted_at = Some(n);
+            }
+        }
+    }
+}

@@ -1,0 +1,321 @@
+//! `bouncing_ball compare`: one scene solved by several methods and drawn together, each
+//! measured against a reference, so a learner sees on their own scene what accuracy costs.
+//!
+//! - [`methods`]: the methods, as `--methods` spells them (`rk4:4:exact`).
+//! - [`checks`]: what stops a comparison midway (a signal, numbers beyond the finite).
+//! - [`reference`]: what every method is measured against, and how far it converged.
+//! - [`measure`]: the time per ball-frame, the error against the reference, the energy.
+//! - [`draw`]: the GIF's frames: every method in its colour, the reference as outlines, the
+//!   legend strip with each method's error so far.
+//! - [`table`]: the numbers on standard output, and as CSV (`--table`).
+//! - [`plot`]: the work-precision diagram (`--plot`): error against time, log-log.
+//!
+//! As [`crate::run`] does, it refuses everything it can before any work, writes every file
+//! beside its target and renames them into place only at the end. The GIF holds no timing,
+//! so it is the same bytes on every run; the table and the plot hold the timings.
+
+pub mod checks;
+pub mod draw;
+pub mod measure;
+pub mod methods;
+pub mod plot;
+pub mod reference;
+pub mod table;
+
+use std::io::{BufWriter, Write};
+use std::path::PathBuf;
+use std::time::Instant;
+
+use crate::budget::{Budget, Estimate};
+use crate::gif::GifWriter;
+use crate::output::{self, AtomicFile, Output, OutputError};
+use crate::physics::{Ball, Simulation};
+use crate::plot::Format;
+use crate::render::write_png;
+use crate::run::{RunError, Summary};
+use crate::scene::{InvalidValue, Scene};
+use crate::stop::Stop;
+
+use checks::{balls_and_frames, check_finite, stop_if_asked};
+use draw::{LegendRow, Picture};
+use measure::{Energy, Outcome, Stray};
+use methods::Method;
+use reference::Reference;
+
+/// The most ball-frames a comparison takes on: it keeps the reference's every centre (and
+/// while converging, two runs of it), 16 bytes a ball-frame, so this bounds that to 128 MB.
+pub const MAX_BALL_FRAMES: u64 = 1 << 22;
+
+/// What to compare and where the results go.
+#[derive(Clone, Debug)]
+pub struct CompareOutputs {
+    pub methods: Vec<Method>,
+    pub gif: PathBuf,
+    pub png: PathBuf,
+    /// The table as CSV, when asked for.
+    pub table: Option<PathBuf>,
+    /// The work-precision diagram (SVG, or PNG for `.png`), when asked for.
+    pub plot: Option<PathBuf>,
+    /// The scene file the scene was read from, which no output may replace.
+    pub scene_file: Option<PathBuf>,
+    /// What each method's run may be predicted to need before the comparison is refused.
+    pub budget: Budget,
+    /// Set by a signal: the comparison stops and writes nothing.
+    pub stop: Stop,
+}
+
+impl CompareOutputs {
+    /// Every output, in the order they are renamed into place.
+    fn list(&self) -> Vec<Output<'_>> {
+        let mut list = vec![
+            Output::picture("--gif", &self.gif, "gif"),
+            Output::picture("--png", &self.png, "png"),
+        ];
+        if let Some(path) = &self.table {
+            list.push(Output::file("--table", path));
+        }
+        if let Some(path) = &self.plot {
+            list.push(Output::file("--plot", path));
+        }
+        list
+    }
+}
+
+/// What a comparison found and wrote.
+#[derive(Clone, Debug)]
+pub struct Comparison {
+    pub outcomes: Vec<Outcome>,
+    /// The table as the terminal shows it.
+    pub table: String,
+    pub summary: Summary,
+}
+
+/// Whether the balls collide with each other: then any two methods part chaotically, and the
+/// frame they part at says more than the size of the error.
+fn chaotic(scene: &Scene) -> bool {
+    scene.ball_collisions.is_some() && scene.balls.len() > 1
+}
+
+/// Refuses a scene too big to keep the reference's path of.
+fn check_size(scene: &Scene) -> Result<(), InvalidValue> {
+    let ball_frames = scene.balls.len() as u64 * u64::from(scene.frames);
+    if ball_frames <= MAX_BALL_FRAMES {
+        return Ok(());
+    }
+    Err(InvalidValue {
+        key: "frames".to_string(),
+        value: scene.frames.to_string(),
+        allowed: format!(
+            "compare keeps the reference's every ball in every frame: balls × frames must be at \
+             most {MAX_BALL_FRAMES} (here {} balls × {} frames)",
+            scene.balls.len(),
+            scene.frames
+        ),
+    })
+}
+
+/// Compares `outputs.methods` on `scene` and writes the outputs; on any error no output file
+/// is left half-written and no existing file is changed.
+pub fn compare(scene: &Scene, outputs: &CompareOutputs) -> Result<Comparison, RunError> {
+    let started = Instant::now();
+    scene.validate()?;
+    check_size(scene)?;
+    for method in &outputs.methods {
+        Estimate::within(&method.on(scene), &outputs.budget)?;
+    }
+    output::check(&outputs.list(), outputs.scene_file.as_deref())?;
+    let plot_format = outputs.plot.as_deref().map(Format::of).transpose()?;
+    let mut files = Files::create(outputs)?;
+
+    let bare = without_trails(scene);
+    let reference = Reference::of(&bare, &outputs.stop)?;
+    let (strays, ends) = animate(scene, outputs, &reference, &mut files)?;
+    let timings = measure::time_all(&bare, &outputs.methods);
+    let drifts = energy_drifts(scene, &reference, &ends);
+    let outcomes: Vec<Outcome> = (0..outputs.methods.len())
+        .map(|k| Outcome {
+            method: outputs.methods[k],
+            timing: timings[k],
+            stray: strays[k].clone(),
+            energy_drift: drifts[k],
+        })
+        .collect();
+
+    let chaotic = chaotic(scene);
+    let conserves = measure::conserves_energy(scene);
+    let table = table::text(&reference.describe(), &outcomes, chaotic, conserves);
+    let title = format!(
+        "work against precision: {} · reference {}",
+        balls_and_frames(scene),
+        reference.method
+    );
+    files.write_table_and_plot(&outcomes, chaotic, scene.frames, plot_format, &title)?;
+    stop_if_asked(&outputs.stop, scene.frames, scene.frames)?;
+    let sizes = files.commit()?;
+    let paths = outputs.list().into_iter().map(|o| o.path.to_path_buf());
+    Ok(Comparison {
+        outcomes,
+        table,
+        summary: Summary {
+            frames: scene.frames,
+            files: paths.zip(sizes).collect(),
+            elapsed: started.elapsed(),
+        },
+    })
+}
+
+/// `scene` without trails: what the reference and the timings run (trails are drawing).
+fn without_trails(scene: &Scene) -> Scene {
+    let mut bare = scene.clone();
+    for ball in &mut bare.balls {
+        ball.trail = 0;
+    }
+    bare
+}
+
+/// Each method's energy drift, given its balls in the last frame (`ends`): against the
+/// first frame's energy if the scene keeps its energy, else against the reference's.
+fn energy_drifts(scene: &Scene, reference: &Reference, ends: &[Vec<Ball>]) -> Vec<Option<f64>> {
+    let energy = Energy::new(scene);
+    let start = energy.of(scene.simulation().balls());
+    let target = if measure::conserves_energy(scene) {
+        start
+    } else {
+        energy.of(&reference.trajectory.last)
+    };
+    let drift = |balls: &Vec<Ball>| (energy.of(balls) - target) / start.abs();
+    ends.iter()
+        .map(|balls| Some(drift(balls)).filter(|d| d.is_finite()))
+        .collect()
+}
+
+/// What the legend says of a method so far.
+fn status(stray: &Stray, chaotic: bool) -> String {
+    match stray.parted_at {
+        Some(frame) if chaotic => format!("parted at frame {frame}"),
+        _ => format!("error {} px", table::short(stray.max_error)),
+    }
+}
+
+/// The longest texts a legend row of `method` can show, for the picture's width.
+fn widest_rows(methods: &[Method], frames: u32) -> Vec<String> {
+    let statuses = [
+        "error 8888.88 px".to_string(),
+        "error 8.8e-88 px".to_string(),
+        format!("parted at frame {frames}"),
+    ];
+    methods
+        .iter()
+        .flat_map(|m| statuses.iter().map(move |s| format!("{m}  {s}")))
+        .collect()
+}
+
+/// Simulates every method frame by frame beside the reference, measuring how far each
+/// strays and drawing them together into the GIF; writes the last frame as the still.
+/// Returns how far each strayed, and its balls in the last frame.
+fn animate(
+    scene: &Scene,
+    outputs: &CompareOutputs,
+    reference: &Reference,
+    files: &mut Files,
+) -> Result<(Vec<Stray>, Vec<Vec<Ball>>), RunError> {
+    let methods = &outputs.methods;
+    let chaotic = chaotic(scene);
+    let reference_row = format!("reference {} (outlines)", reference.method);
+    let mut widest = widest_rows(methods, scene.frames);
+    widest.push(reference_row.clone());
+    let mut picture = Picture::new(scene, methods.len(), reference_row, &widest)?;
+    let (width, height) = picture.size();
+    let gif_error = OutputError::at(&outputs.gif);
+    let mut gif = GifWriter::new(
+        BufWriter::new(files.gif.file()),
+        width as u16,
+        height as u16,
+        picture.palette(),
+        scene.frame_ms,
+    )
+    .map_err(&gif_error)?;
+    let mut simulations: Vec<Simulation> =
+        methods.iter().map(|m| m.on(scene).simulation()).collect();
+    let mut strays = vec![Stray::default(); methods.len()];
+    for n in 0..scene.frames {
+        stop_if_asked(&outputs.stop, n, scene.frames)?;
+        let centres = reference.trajectory.frame(n as usize);
+        for ((simulation, stray), &method) in simulations.iter_mut().zip(&mut strays).zip(methods) {
+            simulation.step();
+            check_finite(scene, method, simulation.balls(), n)?;
+            stray.frame(n, simulation.balls(), centres);
+        }
+        let legend: Vec<LegendRow> = methods
+            .iter()
+            .zip(&strays)
+            .map(|(method, stray)| LegendRow {
+                label: method.to_string(),
+                status: status(stray, chaotic),
+            })
+            .collect();
+        let balls: Vec<&[Ball]> = simulations.iter().map(Simulation::balls).collect();
+        picture.draw(&balls, centres, &legend);
+        gif.write_frame(picture.frame()).map_err(&gif_error)?;
+    }
+    gif.send_queued().map_err(&gif_error)?;
+    let mut png = BufWriter::new(files.png.file());
+    write_png(&mut png, picture.frame(), picture.palette())
+        .and_then(|()| png.flush())
+        .map_err(OutputError::at(&outputs.png))?;
+    drop(png);
+    gif.finish()
+        .and_then(|mut out| out.flush())
+        .map_err(&gif_error)?;
+    let ends = simulations.iter().map(|s| s.balls().to_vec()).collect();
+    Ok((strays, ends))
+}
+
+/// Every file a comparison writes, open from before the work until they all go into place.
+struct Files {
+    gif: AtomicFile,
+    png: AtomicFile,
+    table: Option<AtomicFile>,
+    plot: Option<AtomicFile>,
+}
+
+impl Files {
+    fn create(outputs: &CompareOutputs) -> Result<Files, OutputError> {
+        let optional = |path: &Option<PathBuf>| path.as_deref().map(AtomicFile::create).transpose();
+        Ok(Files {
+            gif: AtomicFile::create(&outputs.gif)?,
+            png: AtomicFile::create(&outputs.png)?,
+            table: optional(&outputs.table)?,
+            plot: optional(&outputs.plot)?,
+        })
+    }
+
+    /// Writes the CSV and the plot, each if asked for (`format` is the plot's).
+    fn write_table_and_plot(
+        &mut self,
+        outcomes: &[Outcome],
+        chaotic: bool,
+        frames: u32,
+        format: Option<Format>,
+        title: &str,
+    ) -> Result<(), OutputError> {
+        if let Some(file) = self.table.as_mut() {
+            let out = BufWriter::new(file.file());
+            table::write_csv(out, outcomes, chaotic).map_err(OutputError::at(file.path()))?;
+        }
+        if let (Some(file), Some(format)) = (self.plot.as_mut(), format) {
+            plot::write(file.file(), format, outcomes, chaotic, frames, title)
+                .map_err(OutputError::at(file.path()))?;
+        }
+        Ok(())
+    }
+
+    /// Puts every file in place; returns their sizes in the order of `CompareOutputs::list`.
+    fn commit(self) -> Result<Vec<u64>, OutputError> {
+        let files = [self.gif, self.png]
+            .into_iter()
+            .chain(self.table)
+            .chain(self.plot);
+        output::commit_all(files.collect())
+    }
+}

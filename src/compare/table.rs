@@ -1,0 +1,117 @@
+//! The comparison as a table: aligned on standard output, and as CSV for `--table`, one row
+//! per method. Above the table, which reference the errors are measured against and how far
+//! it converged; below it, what the energy column means for this scene.
+
+use std::io::{self, Write};
+
+use super::measure::Outcome;
+
+/// The CSV's columns; a value the scene makes meaningless is left empty (the position error
+/// of colliding balls, which part chaotically; a parting that never happened).
+pub const CSV_HEADER: &str = "method,ns_per_ball_frame,ns_per_ball_frame_min,ns_per_ball_frame_max,max_position_error_px,parted_at_frame,energy_drift";
+
+/// What the energy column means, for the line under the table.
+fn energy_meaning(conserves: bool) -> &'static str {
+    if conserves {
+        "energy drift: the change of energy from the first frame to the last, as a share of the \
+         first's (the scene keeps its energy, so all of it is the method's error)"
+    } else {
+        "energy drift: the energy in the last frame minus the reference's, as a share of the \
+         first frame's (the scene loses energy; below zero, the method loses more than it should)"
+    }
+}
+
+/// A number in a few characters: `12.34` from 0.01 to 10,000, else `1.2e-9`.
+pub fn short(value: f64) -> String {
+    if value == 0.0 || (0.01..10_000.0).contains(&value.abs()) {
+        format!("{value:.2}")
+    } else {
+        format!("{value:.1e}")
+    }
+}
+
+/// One row's cells as the terminal shows them.
+fn cells(outcome: &Outcome, chaotic: bool) -> [String; 4] {
+    let timing = &outcome.timing;
+    let error = if chaotic {
+        match outcome.stray.parted_at {
+            Some(frame) => format!("parted at frame {frame}"),
+            None => format!("within a radius ({} px)", short(outcome.stray.max_error)),
+        }
+    } else {
+        short(outcome.stray.max_error)
+    };
+    [
+        outcome.method.to_string(),
+        format!("{:.1} ({:.1}–{:.1})", timing.median, timing.min, timing.max),
+        error,
+        outcome
+            .energy_drift
+            .map_or("–".to_string(), |d| format!("{d:+.1e}")),
+    ]
+}
+
+/// The table as the terminal shows it, every line ending in a newline.
+pub fn text(reference: &str, outcomes: &[Outcome], chaotic: bool, conserves: bool) -> String {
+    let error_title = if chaotic {
+        "first more than a radius off (balls collide: chaotic)"
+    } else {
+        "largest position error, px"
+    };
+    let head = [
+        "method".to_string(),
+        "ns per ball-frame (min–max)".to_string(),
+        error_title.to_string(),
+        "energy drift".to_string(),
+    ];
+    let rows: Vec<[String; 4]> = std::iter::once(head)
+        .chain(outcomes.iter().map(|o| cells(o, chaotic)))
+        .collect();
+    let width = |c: usize| rows.iter().map(|r| r[c].chars().count()).max().unwrap_or(0);
+    let widths = [width(0), width(1), width(2), width(3)];
+    let mut out = format!("reference: {reference}\n");
+    for row in &rows {
+        let line = format!(
+            "{:<w0$}  {:>w1$}  {:>w2$}  {:>w3$}",
+            row[0],
+            row[1],
+            row[2],
+            row[3],
+            w0 = widths[0],
+            w1 = widths[1],
+            w2 = widths[2],
+            w3 = widths[3]
+        );
+        out += line.trim_end();
+        out.push('\n');
+    }
+    out += energy_meaning(conserves);
+    out.push('\n');
+    out
+}
+
+/// The table as CSV: [`CSV_HEADER`], then a row per method.
+pub fn write_csv(mut out: impl Write, outcomes: &[Outcome], chaotic: bool) -> io::Result<()> {
+    writeln!(out, "{CSV_HEADER}")?;
+    for outcome in outcomes {
+        let timing = &outcome.timing;
+        let error = if chaotic {
+            String::new()
+        } else {
+            format!("{:e}", outcome.stray.max_error)
+        };
+        let parted = outcome
+            .stray
+            .parted_at
+            .map_or(String::new(), |f| f.to_string());
+        let energy = outcome
+            .energy_drift
+            .map_or(String::new(), |d| format!("{d:e}"));
+        writeln!(
+            out,
+            "{},{:.2},{:.2},{:.2},{error},{parted},{energy}",
+            outcome.method, timing.median, timing.min, timing.max
+        )?;
+    }
+    out.flush()
+}

@@ -1,0 +1,125 @@
+//! The command line's messages, each one line: a refused flag with what is allowed and the
+//! nearest name, a value the scene cannot take named as the user typed it, a failed run, and
+//! the summary of what a run wrote. `main.rs` prints them; nothing here parses or runs.
+
+use std::process::ExitCode;
+
+use crate::run::{RunError, Summary};
+use crate::scene::InvalidValue;
+
+/// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
+pub fn flag(key: &str) -> String {
+    let name = key.rsplit('.').next().unwrap_or(key);
+    format!("--{}", name.replace('_', "-"))
+}
+
+/// What a run wrote, in one line: every file with its size, the GIF's frames, the time.
+pub fn summary_line(summary: &Summary) -> String {
+    let files: Vec<String> = summary
+        .files
+        .iter()
+        .enumerate()
+        .map(|(k, (path, bytes))| match k {
+            0 => format!(
+                "{} ({} frames, {bytes} bytes)",
+                path.display(),
+                summary.frames
+            ),
+            _ => format!("{} ({bytes} bytes)", path.display()),
+        })
+        .collect();
+    let list = match files.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        _ => files.join(""),
+    };
+    let ms = summary.elapsed.as_secs_f64() * 1000.0;
+    format!("wrote {list} in {ms:.1} ms")
+}
+
+/// A command-line error in one line (clap spreads it over several): what was wrong, what is
+/// allowed and, for a near miss, the nearest name. Help and version print as clap prints them.
+pub fn refuse(error: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind::{DisplayHelp, DisplayVersion};
+    use clap::error::{ContextKind, ContextValue};
+    if matches!(error.kind(), DisplayHelp | DisplayVersion) {
+        error.exit();
+    }
+    let text = |kind| match error.get(kind) {
+        Some(ContextValue::String(text)) => Some(text.clone()),
+        Some(ContextValue::Strings(texts)) if !texts.is_empty() => Some(texts.join(" or ")),
+        _ => None,
+    };
+    let mut line = match (
+        text(ContextKind::InvalidArg),
+        text(ContextKind::InvalidValue),
+    ) {
+        // `--width <WIDTH>` and `9000`: said as the user typed it, then why.
+        (Some(arg), Some(value)) if !value.is_empty() => {
+            // A flag is named by its long form; the one value without a flag is the shell.
+            let flag = match arg.split(' ').next().unwrap_or(&arg) {
+                "<SHELL>" => "completions",
+                flag => flag,
+            };
+            match std::error::Error::source(&error) {
+                Some(why) => format!("error: {flag} {value} is not allowed: {why}"),
+                None => format!("error: {flag} {value} is not allowed"),
+            }
+        }
+        _ => error
+            .to_string()
+            .lines()
+            .next()
+            .unwrap_or("error")
+            .trim_end()
+            .to_string(),
+    };
+    if let Some(ContextValue::Strings(allowed)) = error.get(ContextKind::ValidValue) {
+        if !allowed.is_empty() {
+            line += &format!("; allowed: {}", allowed.join(", "));
+        }
+    }
+    for kind in [ContextKind::SuggestedValue, ContextKind::SuggestedArg] {
+        if let Some(near) = text(kind) {
+            line += &format!("; did you mean {near}?");
+        }
+    }
+    eprintln!("{line}; see --help");
+    ExitCode::from(2)
+}
+
+/// A value the scene cannot take, named as the user knows it: the flag they typed, or the
+/// scene's own value that what they typed no longer fits (`--radius 60` with the default x).
+pub fn refuse_value(bad: &InvalidValue, typed: impl Fn(&str) -> bool) -> String {
+    let name = bad.key.rsplit('.').next().unwrap_or(&bad.key);
+    if typed(name) {
+        return format!(
+            "{} {} is not allowed: {}",
+            flag(&bad.key),
+            bad.value,
+            bad.allowed
+        );
+    }
+    format!(
+        "the scene's {} = {} (not typed: set it with {}) does not fit what was typed: {}",
+        bad.key,
+        bad.value,
+        flag(&bad.key),
+        bad.allowed
+    )
+}
+
+/// A whole number from 0 up, said so when it is not (`--seed -1`).
+pub fn whole_number(text: &str) -> Result<u64, String> {
+    text.parse()
+        .map_err(|_| format!("must be a whole number from 0 to {}", u64::MAX))
+}
+
+/// A run's error in one line; a value the scene cannot take is named as the user knows it
+/// (`typed` says which settings they typed).
+pub fn fail(error: &RunError, typed: impl Fn(&str) -> bool) -> ExitCode {
+    match error {
+        RunError::Invalid(bad) => eprintln!("error: {}", refuse_value(bad, typed)),
+        other => eprintln!("error: {other}"),
+    }
+    ExitCode::from(error.exit_code())
+}
