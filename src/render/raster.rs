@@ -156,15 +156,7 @@ impl Renderer {
     /// so no trail hides a ball.
     pub fn draw(&self, balls: &[Ball], frame: &mut IndexedFrame) {
         self.draw_background(frame);
-        self.draw_circles(balls, frame);
-    }
-
-    /// Draws every circle of `balls` into `frame`, over whatever it holds, in [`Renderer::circles`]'
-    /// order.
-    pub fn draw_circles(&self, balls: &[Ball], frame: &mut IndexedFrame) {
-        // `for_each`, not `for`: the nested iterators run as plain loops.
-        (self.circles(balls))
-            .for_each(|circle| fill_circle(frame, circle.x, circle.y, circle.radius, circle.index));
+        self.each_circle(balls, |c| fill_circle(frame, c.x, c.y, c.radius, c.index));
     }
 
     /// Fills `frame` with the background and draws the floors on it: what lies under the balls.
@@ -181,14 +173,19 @@ impl Renderer {
         }
     }
 
-    /// Every circle [`Renderer::draw`] fills for `balls`, in the order it fills them: every
-    /// trail's dots, then every ball.
-    pub fn circles<'a>(&'a self, balls: &'a [Ball]) -> impl Iterator<Item = Circle> + 'a {
+    /// Calls `draw` with every circle [`Renderer::draw`] fills for `balls`, in the order it
+    /// fills them: every trail's dots, then every ball.
+    pub fn each_circle(&self, balls: &[Ball], mut draw: impl FnMut(Circle)) {
         // Balls beyond the scene's have no colours, and are not drawn.
-        let numbered = || balls.iter().take(self.styles.len()).enumerate();
-        let dots = numbered().flat_map(|(i, ball)| self.trail_dots(i, ball));
-        let tops = numbered().map(|(i, ball)| self.ball_circle(i, ball));
-        dots.chain(tops)
+        let balls = &balls[..balls.len().min(self.styles.len())];
+        for (i, ball) in balls.iter().enumerate() {
+            for dot in self.trail_dots(i, ball) {
+                draw(dot);
+            }
+        }
+        for (i, ball) in balls.iter().enumerate() {
+            draw(self.ball_circle(i, ball));
+        }
     }
 
     /// The dots drawn of the trail of `ball`, ball number `i`: all but the newest point,

@@ -200,7 +200,7 @@ impl Canvas {
             tally_many(Work::PixelsDrawn, run.area());
         }
         let (frame, tiles) = (&mut self.frame, &self.tiles);
-        renderer.circles(balls).for_each(|circle| {
+        renderer.each_circle(balls, |circle| {
             let pixels = PixelBox::of(circle.x, circle.y, circle.radius, frame);
             let Some((pixels, rect)) = pixels.and_then(|p| Some((p, p.on(frame)?))) else {
                 return;
