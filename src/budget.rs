@@ -15,7 +15,7 @@ use std::mem::size_of;
 
 use crate::gif::encoder::queue_frames;
 use crate::physics::{Ball, Trail, Vec2};
-use crate::render::ellipse::PixelBox;
+use crate::render::Canvas;
 use crate::scene::{BallSpec, Rgb, Scene};
 
 /// The memory a run may be predicted to need unless told otherwise, bytes (2 GiB).
@@ -149,10 +149,9 @@ fn memory_of(scene: &Scene) -> (u64, &'static str) {
         Some(_) => GRID_BYTES_PER_BALL + CONTACT_BYTES_PER_BALL,
         None => 0,
     };
-    let balls = scene
-        .balls
-        .iter()
-        .map(|b| per_ball + contacts + Trail::heap_bytes(b.trail) + drawn_bytes(b.trail));
+    let balls = scene.balls.iter().map(|b| {
+        per_ball + contacts + Trail::heap_bytes(b.trail) + Canvas::bytes_per_ball(b.trail)
+    });
     let balls: u64 = balls.sum();
     let shades = shade_table_bytes(&scene.balls);
     let queued = queue_frames(scene.width, scene.height) as f64 * pixels as f64;
@@ -164,13 +163,6 @@ fn memory_of(scene: &Scene) -> (u64, &'static str) {
     ];
     let biggest = parts.iter().max_by_key(|p| p.0).map_or("", |p| p.1);
     (BASE_BYTES + balls + shades + frames, biggest)
-}
-
-/// What the canvas remembers of a ball with a trail of `trail` points, bytes: the pixel box
-/// of each circle it draws (its dots and itself), its trail's length and where its boxes start.
-fn drawn_bytes(trail: usize) -> u64 {
-    let circles = trail.saturating_sub(1) as u64 + 1;
-    circles * size_of::<PixelBox>() as u64 + 2 * size_of::<usize>() as u64
 }
 
 /// The renderer's shade tables: one per trail colour, as long as its longest trail needs.

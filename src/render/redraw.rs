@@ -89,6 +89,15 @@ impl Canvas {
         }
     }
 
+    /// What a canvas remembers of a ball whose trail keeps `trail` points, bytes: the box of
+    /// each circle it draws (its dots and itself), its trail's length, where its boxes start,
+    /// and whether it was still.
+    pub fn bytes_per_ball(trail: usize) -> u64 {
+        let circles = drawn_dots(trail).len() + 1;
+        let boxes = circles * size_of::<PixelBox>();
+        (boxes + 2 * size_of::<usize>() + size_of::<Option<Still>>()) as u64
+    }
+
     /// The frame as last drawn.
     pub fn frame(&self) -> &IndexedFrame {
         &self.frame
@@ -129,6 +138,11 @@ impl Canvas {
         self.drawn.valid = true;
         let mut changed = fresh;
         for (i, ball) in balls.iter().enumerate().take(self.drawn.trails.len()) {
+            let still = Still::of(ball);
+            if !fresh && still.is_some() && self.drawn.stills[i] == still {
+                continue; // a ball at rest on its own trail, as it was: the quick answer
+            }
+            self.drawn.stills[i] = still;
             self.measure(renderer, i, ball);
             let trail = ball.trail.len();
             if !fresh && self.drawn.matches(i, trail, &self.boxes) {
@@ -212,12 +226,39 @@ impl Canvas {
     }
 }
 
+/// A ball whose every trail point lies on its centre, to the bit: its centre and radius (as
+/// bits) and how many points its trail holds. Two frames of one ball with the same `Still`
+/// draw the same circles, so a ball at rest (asleep, or never moving) is answered by
+/// comparing a few numbers, without measuring its circles.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Still {
+    centre: [u64; 2],
+    radius: u64,
+    trail: usize,
+}
+
+impl Still {
+    /// `None` when some trail point lies off the ball's centre.
+    fn of(ball: &Ball) -> Option<Still> {
+        let centre = [ball.x.to_bits(), ball.y.to_bits()];
+        let on_centre = |&(x, y): &(f64, f64)| [x.to_bits(), y.to_bits()] == centre;
+        ball.trail.iter().all(on_centre).then_some(Still {
+            centre,
+            radius: ball.radius.to_bits(),
+            trail: ball.trail.len(),
+        })
+    }
+}
+
 /// What each ball drew in the last frame: how many points its trail held (which, with a
 /// dot's place, picks its shade), and its circles' boxes of whole pixels
 /// ([`PixelBox::NOTHING`] for a circle that filled nothing).
 #[derive(Clone, Debug)]
 struct Drawn {
     trails: Vec<usize>,
+    /// Each ball as it was when its boxes were last measured, if it was still then: the
+    /// circles it drew were those a still ball there draws, and have not changed since.
+    stills: Vec<Option<Still>>,
     /// Each ball's boxes, its dots then itself, in a slot as long as the most it draws:
     /// ball `i`'s from `starts[i]` up to `starts[i + 1]`.
     boxes: Vec<PixelBox>,
@@ -236,6 +277,7 @@ impl Drawn {
         let balls = starts.len() - 1;
         Drawn {
             trails: vec![0; balls],
+            stills: vec![None; balls],
             boxes: vec![PixelBox::NOTHING; starts[balls]],
             starts,
             valid: false,
