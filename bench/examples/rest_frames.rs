@@ -7,7 +7,8 @@
 //! - **falling**: the first frames, every ball moving;
 //! - **settling**: frames late in the run, the pile nearly still;
 //! - **at rest**: the last state drawn again and again unchanged, as balls that sleep leave
-//!   it (the physics of these frames is not run: what rest costs the solver is the solver's
+//!   it, their trails gathered on their centres as a trail's length of frames asleep leaves
+//!   them (the physics of these frames is not run: what rest costs the solver is the solver's
 //!   business, see docs/contacts.md).
 //!
 //! Drawing and encoding are timed on the caller's thread (drawing, finding the changed
@@ -43,6 +44,8 @@ colours = [[255, 200, 60], [255, 90, 90], [120, 230, 120], [200, 120, 255]]
 trail_colours = [[60, 140, 255], [255, 150, 60], [60, 200, 200], [230, 90, 200]]
 "#;
 
+/// The balls' trail, points (as in the scene below).
+const TRAIL: usize = 4;
 /// Frames of each phase, and the frames run (untimed) between falling and settling.
 const PHASE_FRAMES: u32 = 100;
 const BETWEEN: u32 = 300;
@@ -56,6 +59,8 @@ struct Phase {
     compress: Duration,
     /// Frames unchanged, drawn again in areas, drawn whole.
     kinds: [u32; 3],
+    /// Drawing and queueing the unchanged frames alone.
+    unchanged: Duration,
 }
 
 fn main() -> std::io::Result<()> {
@@ -67,6 +72,7 @@ fn main() -> std::io::Result<()> {
     let mut gif = GifWriter::new(Vec::new(), 1280, 720, renderer.palette(), 30)?;
     let mut simulation = scene.simulation();
     let mut phases: Vec<(&str, Phase)> = Vec::new();
+    let mut asleep = Vec::new();
     for (name, frames, physics) in [
         ("falling", PHASE_FRAMES, true),
         ("(between)", BETWEEN, true),
@@ -75,22 +81,30 @@ fn main() -> std::io::Result<()> {
     ] {
         let mut phase = Phase::default();
         let lzw_before = gif.timings().lzw;
+        if !physics {
+            asleep = simulation.balls().to_vec();
+            for ball in &mut asleep {
+                (0..TRAIL).for_each(|_| ball.record_trail());
+            }
+        }
         for _ in 0..frames {
             let t = Instant::now();
             if physics {
                 simulation.step();
             }
             phase.physics += t.elapsed();
+            let started = Instant::now();
+            let balls = if physics { simulation.balls() } else { &asleep };
             let (t, kind) = if whole {
                 let t = Instant::now();
-                renderer.draw(simulation.balls(), &mut frame);
+                renderer.draw(balls, &mut frame);
                 phase.draw += t.elapsed();
                 let t = Instant::now();
                 gif.write_frame(&frame)?;
                 (t, 2)
             } else {
                 let t = Instant::now();
-                canvas.redraw(&renderer, simulation.balls());
+                canvas.redraw(&renderer, balls);
                 phase.draw += t.elapsed();
                 let t = Instant::now();
                 gif.write_changes(canvas.frame(), canvas.damage())?;
@@ -98,6 +112,9 @@ fn main() -> std::io::Result<()> {
             };
             phase.queue += t.elapsed();
             phase.kinds[kind] += 1;
+            if kind == 0 {
+                phase.unchanged += started.elapsed();
+            }
         }
         gif.flush()?;
         phase.compress = gif.timings().lzw - lzw_before;
@@ -147,4 +164,12 @@ fn print_table(phases: &[(&str, Phase)], whole: bool) {
         "\ndrawing + encoding at rest: {:.2} % of a falling frame's",
         100.0 * cost("at rest") / cost("falling")
     );
+    let (_, rest) = phases
+        .iter()
+        .find(|(n, _)| *n == "at rest")
+        .expect("a phase");
+    if rest.kinds[0] > 0 {
+        let each = rest.unchanged.as_secs_f64() * 1e3 / f64::from(rest.kinds[0]);
+        println!("an unchanged frame at rest: {each:.4} ms to draw and queue");
+    }
 }
