@@ -3,7 +3,9 @@
 //! In many scenes most of the canvas stays as it was from one frame to the next: a pile at
 //! rest, a few balls moving among many still ones. A [`Canvas`] remembers what each ball drew
 //! in the last frame: the box of whole pixels of each of its circles (its trail's dots, then
-//! itself) and how long its trail was (which picks the dots' shades). For the next frame:
+//! itself) and how long its trail was (which picks the dots' shades); for a ball at rest on
+//! its own trail, a few numbers answer as well (its centre, radius and trail length). For the
+//! next frame:
 //!
 //! - if no ball would draw anything different, nothing is drawn: the frame is the last one,
 //!   pixel for pixel, and says so ([`Damage::Unchanged`]), so the GIF compares nothing;
