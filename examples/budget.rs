@@ -28,6 +28,7 @@ const SCENES: &[(&str, &str, &[&str])] = &[
     ("elastic ×20k frames", "", &["--preset", "elastic", "--frames", "20000"]),
     ("many ×100k frames", "", &["--preset", "many", "--frames", "100000"]),
     ("pile ×2k frames", "", &["--preset", "pile", "--frames", "2000"]),
+    ("pile ×200k frames (asleep)", "", &["--preset", "pile", "--frames", "200000"]),
     ("billiards ×2k frames", "", &["--preset", "billiards", "--frames", "2000"]),
     (
         "8192² canvas, 3 frames",

@@ -14,7 +14,7 @@ use std::fmt;
 use std::mem::size_of;
 
 use crate::gif::encoder::queue_frames;
-use crate::physics::{Ball, Trail, Vec2};
+use crate::physics::{Ball, Simulation, Trail, Vec2};
 use crate::render::Canvas;
 use crate::scene::{BallSpec, Rgb, Scene};
 
@@ -60,9 +60,12 @@ const NS_PER_BALL_STEP: f64 = 30.0;
 const NS_PER_COLLIDING_BALL_STEP: f64 = 400.0;
 /// Per floor per ball per step.
 const NS_PER_FLOOR_TEST: f64 = 10.0;
-/// Per ball or trail dot drawn, and per pixel of them (every frame draws every ball).
+/// Per ball or trail dot drawn, and per pixel of them (a frame that changed draws every ball).
 const NS_PER_DOT: f64 = 15.0;
 const NS_PER_DRAWN_PIXEL: f64 = 1.0;
+/// Per ball per frame in which nothing changed: its trail recorded, the frame found unchanged
+/// (a sleeping pile's frames, fitted to `--preset pile -n 200000`).
+const NS_PER_QUIET_BALL: f64 = 15.0;
 /// Per pixel of a frame's changed rectangle (cut out and coded, in several ways), and per
 /// pixel that changed in it (what the codes have to spell out).
 const NS_PER_RECT_PIXEL: f64 = 3.6;
@@ -245,8 +248,13 @@ impl Estimate {
             activity.add(Activity::of(scene));
         }
         activity.changed_frames = activity.changed_frames.min(f64::from(frames));
+        // The tiled frame is compared whole every frame; the panels' drawing and stepping are
+        // counted with each panel, below.
+        (activity.drawn_frames, activity.awake_ball_frames) = (f64::from(frames), 0.0);
         activity.rect_pixels = activity.changed_frames * f64::from(width) * f64::from(height);
-        let parts = panels.iter().map(|scene| (*scene, Activity::default()));
+        let parts = panels
+            .iter()
+            .map(|scene| (*scene, Activity::every_frame(scene)));
         let parts: Vec<Estimate> = parts
             .chain([(&canvas, activity)])
             .map(|(scene, activity)| Estimate::with_memory(scene, memory, biggest, activity))
@@ -280,12 +288,14 @@ impl Estimate {
         } + scene.floors.len() as f64 * NS_PER_FLOOR_TEST;
         let drawn: f64 = scene.balls.iter().map(|b| drawn_pixels(b, scene)).sum();
         let dots: f64 = scene.balls.iter().map(|b| b.trail.max(1) as f64).sum();
-        let every_frame = canvas * NS_PER_CANVAS_PIXEL
-            + n * steps * per_step
-            + dots * NS_PER_DOT
-            + drawn * NS_PER_DRAWN_PIXEL;
         let frames = f64::from(scene.frames);
-        let changing = activity.rect_pixels * NS_PER_RECT_PIXEL
+        // Every frame records the trails; only frames that changed are drawn and compared,
+        // and only awake balls are stepped.
+        let every_frame = n * NS_PER_QUIET_BALL;
+        let drawing = canvas * NS_PER_CANVAS_PIXEL + dots * NS_PER_DOT + drawn * NS_PER_DRAWN_PIXEL;
+        let changing = activity.drawn_frames * drawing
+            + activity.awake_ball_frames * steps * per_step
+            + activity.rect_pixels * NS_PER_RECT_PIXEL
             + activity.changed_pixels * NS_PER_CHANGED_PIXEL
             + activity.changed_frames * NS_PER_CHANGED_FRAME;
         let once = NS_PER_RUN + canvas * NS_PER_CANVAS_PIXEL_ONCE;
@@ -362,6 +372,11 @@ fn drawn_pixels(ball: &BallSpec, scene: &Scene) -> f64 {
 struct Activity {
     /// Frames in which anything changed (expected).
     changed_frames: f64,
+    /// Frames drawn: those that changed (a run draws no other), or every frame (a sweep's
+    /// panels are drawn whole).
+    drawn_frames: f64,
+    /// Balls stepped, summed over the frames (a sleeping ball is not).
+    awake_ball_frames: f64,
     /// Pixels of the frames' changed rectangles (the union of the moving balls and trails).
     rect_pixels: f64,
     /// Pixels that changed.
@@ -377,6 +392,8 @@ impl Activity {
         let drawn: f64 = scene.balls.iter().map(|b| drawn_pixels(b, scene)).sum();
         Activity {
             changed_frames: frames,
+            drawn_frames: frames,
+            awake_ball_frames: frames * scene.balls.len() as f64,
             rect_pixels: frames * canvas,
             changed_pixels: frames * drawn.min(canvas),
         }
@@ -411,6 +428,8 @@ impl Activity {
             let chance = changed.min(1.0);
             let this = Activity {
                 changed_frames: chance,
+                drawn_frames: chance,
+                awake_ball_frames: awake(&simulation),
                 rect_pixels: chance * rect.area(),
                 changed_pixels: changed,
             };
@@ -422,15 +441,40 @@ impl Activity {
         // The rest of the run at the pace of the pilot's last quarter.
         let rest = f64::from(scene.frames - pilot) / f64::from(pilot.div_ceil(4));
         total.changed_frames += tail.changed_frames * rest;
+        total.drawn_frames += tail.drawn_frames * rest;
+        total.awake_ball_frames += tail.awake_ball_frames * rest;
         total.rect_pixels += tail.rect_pixels * rest;
         total.changed_pixels += tail.changed_pixels * rest;
         total
     }
 
+    /// A sweep panel's own activity: drawn whole and stepped in every frame.
+    fn every_frame(scene: &Scene) -> Activity {
+        let frames = f64::from(scene.frames);
+        Activity {
+            drawn_frames: frames,
+            awake_ball_frames: frames * scene.balls.len() as f64,
+            ..Activity::default()
+        }
+    }
+
     fn add(&mut self, other: Activity) {
         self.changed_frames += other.changed_frames;
+        self.drawn_frames += other.drawn_frames;
+        self.awake_ball_frames += other.awake_ball_frames;
         self.rect_pixels += other.rect_pixels;
         self.changed_pixels += other.changed_pixels;
+    }
+}
+
+/// How many balls the solver steps now: all but the sleeping ones, and none once every ball
+/// sleeps (exact mode steps every ball while any is awake).
+fn awake(simulation: &Simulation) -> f64 {
+    let (n, sleeping) = (simulation.balls().len(), simulation.sleeping_balls());
+    match (sleeping == n, simulation.has_contact_solver()) {
+        (true, _) => 0.0,
+        (false, true) => (n - sleeping) as f64,
+        (false, false) => n as f64,
     }
 }
 
