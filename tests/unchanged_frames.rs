@@ -15,16 +15,13 @@ use common::decode_gif;
 
 const TRAIL: usize = 5;
 
+/// A coloured ball with a trail, so frames have something that fades and shrinks.
 fn ball(x: f64, y: f64, vx: f64, vy: f64, radius: f64) -> BallSpec {
     BallSpec {
-        x,
-        y,
-        vx,
-        vy,
-        radius,
         colour: [255, 200, 60],
         trail_colour: [60, 140, 255],
         trail: TRAIL,
+        ..common::white_ball(x, y, vx, vy, radius)
     }
 }
 
