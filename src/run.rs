@@ -144,28 +144,59 @@ impl RunError {
             RunError::Stopped { signal, .. } => signal.exit_code(),
         }
     }
+
+    /// `Stopped` at `frame` of `frames` if a signal has come; `unwritten` names the files
+    /// left as they were.
+    pub(crate) fn if_stopped(
+        stop: &Stop,
+        frame: u32,
+        frames: u32,
+        unwritten: impl FnOnce() -> String,
+    ) -> Result<(), RunError> {
+        match stop.requested() {
+            Some(signal) => Err(RunError::Stopped {
+                signal,
+                frame,
+                frames,
+                unwritten: unwritten(),
+            }),
+            None => Ok(()),
+        }
+    }
+
+    /// `NonFinite` for the first ball that left the finite numbers in `frame`, so no NaN is
+    /// traced, measured, drawn or written; `inputs` says what that ball (by index) came from.
+    pub(crate) fn if_not_finite(
+        balls: &[Ball],
+        frame: u32,
+        inputs: impl FnOnce(usize) -> String,
+    ) -> Result<(), RunError> {
+        let Some((i, ball)) = balls.iter().enumerate().find(|(_, b)| !b.is_finite()) else {
+            return Ok(());
+        };
+        Err(RunError::NonFinite {
+            ball: i,
+            frame,
+            state: format!(
+                "x {:?}, y {:?}, vx {:?}, vy {:?}",
+                ball.x, ball.y, ball.vx, ball.vy
+            ),
+            inputs: inputs(i),
+        })
+    }
 }
 
-/// Checks that every ball is still a finite number, so no NaN is traced, drawn or written.
+/// Checks that every ball is still a finite number, naming the start of the one that is not.
 fn check_finite(scene: &Scene, balls: &[Ball], frame: u32) -> Result<(), RunError> {
-    let Some((i, ball)) = balls.iter().enumerate().find(|(_, b)| !b.is_finite()) else {
-        return Ok(());
-    };
-    let spec = &scene.balls[i];
-    let gravity = scene
-        .gravity
-        .map_or("no gravity".to_string(), |g| format!("gravity {g:?}"));
-    Err(RunError::NonFinite {
-        ball: i,
-        frame,
-        state: format!(
-            "x {:?}, y {:?}, vx {:?}, vy {:?}",
-            ball.x, ball.y, ball.vx, ball.vy
-        ),
-        inputs: format!(
+    RunError::if_not_finite(balls, frame, |i| {
+        let spec = &scene.balls[i];
+        let gravity = scene
+            .gravity
+            .map_or("no gravity".to_string(), |g| format!("gravity {g:?}"));
+        format!(
             "x {:?}, y {:?}, vx {:?}, vy {:?}, {gravity}",
             spec.x, spec.y, spec.vx, spec.vy
-        ),
+        )
     })
 }
 
@@ -384,13 +415,5 @@ impl<'a> TraceWriter<'a> {
 
 /// Returns `Stopped` if a signal has come.
 fn stop_if_asked(outputs: &Outputs, frame: u32, frames: u32) -> Result<(), RunError> {
-    match outputs.stop.requested() {
-        Some(signal) => Err(RunError::Stopped {
-            signal,
-            frame,
-            frames,
-            unwritten: outputs.files(),
-        }),
-        None => Ok(()),
-    }
+    RunError::if_stopped(&outputs.stop, frame, frames, || outputs.files())
 }

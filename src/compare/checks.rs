@@ -17,15 +17,9 @@ pub fn balls_and_frames(scene: &Scene) -> String {
 
 /// Returns `Stopped` if a signal has come.
 pub fn stop_if_asked(stop: &Stop, frame: u32, frames: u32) -> Result<(), RunError> {
-    match stop.requested() {
-        Some(signal) => Err(RunError::Stopped {
-            signal,
-            frame,
-            frames,
-            unwritten: "any of the comparison's files".to_string(),
-        }),
-        None => Ok(()),
-    }
+    RunError::if_stopped(stop, frame, frames, || {
+        "any of the comparison's files".to_string()
+    })
 }
 
 /// Refuses balls that left the finite numbers, so no NaN is measured or drawn.
@@ -35,16 +29,7 @@ pub fn check_finite(
     balls: &[Ball],
     frame: u32,
 ) -> Result<(), RunError> {
-    let Some((ball, state)) = balls.iter().enumerate().find(|(_, b)| !b.is_finite()) else {
-        return Ok(());
-    };
-    Err(RunError::NonFinite {
-        ball,
-        frame,
-        state: format!(
-            "x {:?}, y {:?}, vx {:?}, vy {:?}",
-            state.x, state.y, state.vx, state.vy
-        ),
-        inputs: format!("{} solved by {method}", balls_and_frames(scene)),
+    RunError::if_not_finite(balls, frame, |_| {
+        format!("{} solved by {method}", balls_and_frames(scene))
     })
 }

@@ -175,15 +175,9 @@ fn animate<W: Write>(
                 continue;
             }
             simulation.step();
-            if let Some(ball) = simulation.balls().iter().position(|b| !b.is_finite()) {
-                let b = &simulation.balls()[ball];
-                return Err(RunError::NonFinite {
-                    ball,
-                    frame: n,
-                    state: format!("x {:?}, y {:?}, vx {:?}, vy {:?}", b.x, b.y, b.vx, b.vy),
-                    inputs: format!("the panel {}", panel.label),
-                });
-            }
+            RunError::if_not_finite(simulation.balls(), n, |_| {
+                format!("the panel {}", panel.label)
+            })?;
             renderers[i].draw(simulation.balls(), frame);
             tiling.paste(i, frame, &mut canvas);
         }
@@ -196,20 +190,12 @@ fn animate<W: Write>(
 
 /// Returns `Stopped` if a signal has come.
 fn stop_if_asked(outputs: &SweepOutputs, frame: u32, frames: u32) -> Result<(), RunError> {
-    match outputs.stop.requested() {
-        Some(signal) => {
-            let names: Vec<String> = outputs
-                .list()
-                .iter()
-                .map(|o| o.path.display().to_string())
-                .collect();
-            Err(RunError::Stopped {
-                signal,
-                frame,
-                frames,
-                unwritten: names.join(", "),
-            })
-        }
-        None => Ok(()),
-    }
+    RunError::if_stopped(&outputs.stop, frame, frames, || {
+        let names: Vec<String> = outputs
+            .list()
+            .iter()
+            .map(|o| o.path.display().to_string())
+            .collect();
+        names.join(", ")
+    })
 }
