@@ -52,6 +52,15 @@ pub const SLEEP_GAP: f64 = 0.01;
 /// resting contact keeps its warm start from step to step.
 pub const PAIR_MARGIN: f64 = 0.1;
 
+/// Velocity passes in each sub-step when gravity loads the contacts. A heap carries its
+/// weight only if the velocity pass has all but converged before the position pass moves the
+/// balls. With one pass, the 47 rows of a heap of 10,000 balls sink a little in every sub-step,
+/// the position pass lifts them back, and the lift keeps the heap churning at up to 3 px/frame
+/// for good. With three, that heap comes to rest within 800 frames, at a third more cost per
+/// frame while it falls (`docs/contacts.md`). Without gravity nothing presses on a contact, and
+/// the one pass a bounce needs is enough.
+pub const LOADED_VELOCITY_PASSES: u32 = 3;
+
 /// Overlap the position pass leaves alone, as a share of the radius: correcting every last
 /// bit of it moves resting balls every step, and they never come to rest (Box2D's "linear
 /// slop" plays this part).
@@ -74,9 +83,10 @@ pub const SLEEP_SPEED: f64 = 0.085;
 /// How long every ball of an island must stay below [`SLEEP_SPEED`] before the island
 /// sleeps, frames: rapier's `time_until_sleep`, 2 s, at the lesson's 30 ms a frame. Box2D
 /// waits 0.5 s (17 frames), which is enough for bodies with friction; frictionless balls
-/// creep. In the `pile` preset a ball wedged between the wall and the balls below slides off
-/// at under 0.04 px/frame for 25 frames, then falls 12 px: after 17 calm frames the pile
-/// would sleep with it still up there, after 67 it has fallen.
+/// creep. A ball wedged between a wall and the balls below can slide off at under
+/// 0.04 px/frame for 25 frames, then fall 12 px (the `pile` preset's did, with one velocity
+/// pass): after 17 calm frames its island would sleep with it still up there, after 67 it
+/// has fallen.
 pub const SLEEP_FRAMES: u32 = 67;
 
 // ---- Limits: work and memory bounded whatever the scene ----

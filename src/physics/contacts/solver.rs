@@ -42,6 +42,8 @@
 //!      settles instead of buzzing). Box2D v3 leaves bounces to its restitution stage, from
 //!      the approach speed the contact was prepared with; here a contact bounces at its
 //!      approach speed of the moment, so a struck ball passes the blow on within the step.
+//!      Under gravity the pass runs three times ([`LOADED_VELOCITY_PASSES`]), so that a deep
+//!      heap carries its weight before the position pass moves it; without, once.
 //!    - **Integrate positions**: fly `h` with the solved velocities.
 //!    - **Relax** (`ContactSet::relax`), the position pass: overlap beyond a small slop is
 //!      partly pushed out, moving positions only, so no kinetic energy is added. (Box2D v3's
@@ -72,8 +74,8 @@ use crate::physics::integrate::integrator::{Forces, Movable};
 use crate::physics::maths;
 use crate::physics::motion::Motion;
 use crate::physics::tolerances::{
-    LESSON_GRAVITY, MAX_PAIRS_PER_BALL, PAIR_MARGIN, PUSH, REST_SPEED, SLEEP_FRAMES, SLEEP_SPEED,
-    SLOP, TOUCHES_PER_CONTACT,
+    LESSON_GRAVITY, LOADED_VELOCITY_PASSES, MAX_PAIRS_PER_BALL, PAIR_MARGIN, PUSH, REST_SPEED,
+    SLEEP_FRAMES, SLEEP_SPEED, SLOP, TOUCHES_PER_CONTACT,
 };
 use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
@@ -148,6 +150,8 @@ struct Stepping<'a> {
     free: bool,
     /// Below this speed, px/frame, a ball counts as still (0 without gravity: nothing sleeps).
     sleep_speed: f64,
+    /// Velocity passes per sub-step: [`LOADED_VELOCITY_PASSES`] under gravity, else one.
+    velocity_passes: u32,
 }
 
 impl Stepping<'_> {
@@ -168,6 +172,11 @@ impl Stepping<'_> {
             },
             free: whole.gravity.is_none() && whole.drag.is_none(),
             sleep_speed: SLEEP_SPEED * gravity / LESSON_GRAVITY,
+            velocity_passes: if gravity > 0.0 {
+                LOADED_VELOCITY_PASSES
+            } else {
+                1
+            },
         }
     }
 }
@@ -850,7 +859,9 @@ impl ContactSet<'_> {
         for _ in 0..stepping.motion.iterations {
             self.integrate_velocities(balls, stepping);
             self.warm_start(balls);
-            self.solve(balls, stepping.sub);
+            for _ in 0..stepping.velocity_passes {
+                self.solve(balls, stepping.sub);
+            }
             self.integrate_positions(balls, stepping);
             self.relax(balls, Push::Part);
         }
@@ -893,7 +904,7 @@ impl ContactSet<'_> {
         }
     }
 
-    /// The velocity pass: one Gauss–Seidel pass over every contact's velocity.
+    /// The velocity pass: one Gauss–Seidel sweep over every contact's velocity.
     fn solve(&mut self, balls: &mut [Body], sub: SubStep) {
         for contact in self.pairs.iter_mut() {
             let (a, b) = two(balls, contact.a, contact.b);
