@@ -75,7 +75,8 @@ const NS_PER_CHANGED_FRAME: f64 = 2_000.0;
 /// Once per run: starting the process, the first whole frame, the PNG, flushing files.
 const NS_PER_RUN: f64 = 5e6;
 const NS_PER_CANVAS_PIXEL_ONCE: f64 = 20.0;
-/// GIF bytes: the first frame per canvas pixel (mostly one colour), then per pixel of a
+/// GIF bytes: the first frame per canvas pixel (mostly one colour) and per pixel of its balls
+/// (as changed pixels: a still pyramid is nearly all first frame), then per pixel of a
 /// changed rectangle (mostly background, which LZW packs well), per pixel that changed (the
 /// edges of moving balls and dots cost the bytes), and per changed frame.
 const GIF_BYTES_PER_CANVAS_PIXEL: f64 = 0.002;
@@ -287,6 +288,7 @@ impl Estimate {
             None => NS_PER_BALL_STEP,
         } + scene.floors.len() as f64 * NS_PER_FLOOR_TEST;
         let drawn: f64 = scene.balls.iter().map(|b| drawn_pixels(b, scene)).sum();
+        let first_frame_balls: f64 = scene.balls.iter().map(|b| disc_pixels(b, scene)).sum();
         let dots: f64 = scene.balls.iter().map(|b| b.trail.max(1) as f64).sum();
         let frames = f64::from(scene.frames);
         // Every frame records the trails; only frames that changed are drawn and compared,
@@ -304,6 +306,7 @@ impl Estimate {
             frame_ns: every_frame + changing / frames,
             seconds: (every_frame * frames + changing + once) * 1e-9,
             gif_bytes: canvas * GIF_BYTES_PER_CANVAS_PIXEL
+                + first_frame_balls.min(canvas) * GIF_BYTES_PER_CHANGED_PIXEL
                 + activity.rect_pixels * GIF_BYTES_PER_RECT_PIXEL
                 + activity.changed_pixels * GIF_BYTES_PER_CHANGED_PIXEL
                 + activity.changed_frames * GIF_BYTES_PER_CHANGED_FRAME,
@@ -351,11 +354,16 @@ impl Estimate {
     }
 }
 
+/// The pixels a ball covers, without its trail (at most the canvas).
+fn disc_pixels(ball: &BallSpec, scene: &Scene) -> f64 {
+    let canvas = f64::from(scene.width) * f64::from(scene.height);
+    (std::f64::consts::PI * ball.radius * ball.radius).min(canvas)
+}
+
 /// The pixels a ball and its trail cover when drawn: the ball, and its dots shrinking into
 /// the past (on average a third of its area each; a trail that does not shrink, all of it).
 fn drawn_pixels(ball: &BallSpec, scene: &Scene) -> f64 {
-    let canvas = f64::from(scene.width) * f64::from(scene.height);
-    let area = (std::f64::consts::PI * ball.radius * ball.radius).min(canvas);
+    let area = disc_pixels(ball, scene);
     let dots = ball.trail.saturating_sub(1) as f64;
     let dots = if scene.trail_shrink { dots / 3.0 } else { dots };
     area * (1.0 + dots)
