@@ -67,9 +67,15 @@ fn assert_nothing_moves(simulation: &mut Simulation, what: &str) {
     }
 }
 
-/// The deepest overlap of `balls`, as a share of the radius of the first.
-fn deepest_share(balls: &[Ball]) -> f64 {
-    deepest_overlap(balls) / balls[0].radius
+/// Checks that no two of `balls` overlap by more than `bound` of the first's radius, and
+/// returns the deepest overlap, as that share.
+fn assert_overlap_at_most(balls: &[Ball], bound: f64, what: &str) -> f64 {
+    let deepest = deepest_overlap(balls) / balls[0].radius;
+    assert!(
+        deepest <= bound,
+        "{what}: deepest overlap at rest expected at most {bound} r, got {deepest:.4} r"
+    );
+    deepest
 }
 
 #[test]
@@ -79,11 +85,7 @@ fn the_pile_falls_asleep_and_its_balls_do_not_move_once_asleep() {
     let frame = until_asleep(&mut simulation, scene.balls.len(), "pile");
     eprintln!("the pile sleeps from frame {frame}");
     assert_nothing_moves(&mut simulation, "pile");
-    let deepest = deepest_share(simulation.balls());
-    assert!(
-        deepest <= RESTING_OVERLAP,
-        "pile: deepest overlap at rest expected at most {RESTING_OVERLAP} r, got {deepest:.4} r"
-    );
+    assert_overlap_at_most(simulation.balls(), RESTING_OVERLAP, "pile");
 }
 
 #[test]
@@ -170,10 +172,10 @@ fn a_ball_dropped_onto_the_sleeping_pile_wakes_it_and_the_pile_comes_to_rest_aga
          frames after that"
     );
     assert_nothing_moves(&mut simulation, "pile woken by a late ball");
-    let deepest = deepest_share(simulation.balls());
-    assert!(
-        deepest <= RESTING_OVERLAP,
-        "deepest overlap at rest again expected at most {RESTING_OVERLAP} r, got {deepest:.4} r"
+    assert_overlap_at_most(
+        simulation.balls(),
+        RESTING_OVERLAP,
+        "pile woken by a late ball",
     );
 }
 
@@ -218,10 +220,6 @@ fn a_heap_forty_rows_deep_comes_to_rest_and_falls_asleep() {
     scene.validate().unwrap();
     let mut simulation = scene.simulation();
     let frame = until_asleep(&mut simulation, scene.balls.len(), "deep heap");
-    let deepest = deepest_share(simulation.balls());
+    let deepest = assert_overlap_at_most(simulation.balls(), DEEP_HEAP_OVERLAP, "deep heap");
     eprintln!("the deep heap sleeps from frame {frame}, deepest overlap {deepest:.4} r");
-    assert!(
-        deepest <= DEEP_HEAP_OVERLAP,
-        "deep heap: deepest overlap at rest expected at most {DEEP_HEAP_OVERLAP} r, got {deepest:.4} r"
-    );
 }

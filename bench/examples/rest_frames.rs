@@ -73,14 +73,16 @@ fn main() -> std::io::Result<()> {
     let mut simulation = scene.simulation();
     let mut phases: Vec<(&str, Phase)> = Vec::new();
     let mut settled = 0;
-    for name in ["falling", "(settling)", "at rest"] {
+    // Each phase, and whether it runs until every ball sleeps rather than for its frames.
+    for (name, until_asleep) in [("falling", false), ("(settling)", true), ("at rest", false)] {
         let mut phase = Phase::default();
         let lzw_before = gif.timings().lzw;
         let mut frames = 0;
         loop {
-            let done = match name {
-                "(settling)" => simulation.sleeping_balls() == COUNT || frames == PATIENCE,
-                _ => frames == PHASE_FRAMES,
+            let done = if until_asleep {
+                simulation.sleeping_balls() == COUNT || frames == PATIENCE
+            } else {
+                frames == PHASE_FRAMES
             };
             if done {
                 break;
@@ -114,7 +116,7 @@ fn main() -> std::io::Result<()> {
         }
         gif.flush()?;
         phase.compress = gif.timings().lzw - lzw_before;
-        if name == "(settling)" {
+        if until_asleep {
             settled = PHASE_FRAMES + frames;
         }
         phases.push((name, phase));

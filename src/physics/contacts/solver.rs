@@ -133,6 +133,18 @@ struct SubStep {
     rest_speed: f64,
 }
 
+impl SubStep {
+    /// Velocity passes per sub-step: [`LOADED_VELOCITY_PASSES`] when gravity loads the
+    /// contacts, else the one a bounce needs.
+    fn velocity_passes(self) -> u32 {
+        if self.loaded {
+            LOADED_VELOCITY_PASSES
+        } else {
+            1
+        }
+    }
+}
+
 /// How the steps of one frame move the balls, worked out once per frame.
 #[derive(Clone, Copy, Debug)]
 struct Stepping<'a> {
@@ -150,8 +162,6 @@ struct Stepping<'a> {
     free: bool,
     /// Below this speed, px/frame, a ball counts as still (0 without gravity: nothing sleeps).
     sleep_speed: f64,
-    /// Velocity passes per sub-step: [`LOADED_VELOCITY_PASSES`] under gravity, else one.
-    velocity_passes: u32,
 }
 
 impl Stepping<'_> {
@@ -172,11 +182,6 @@ impl Stepping<'_> {
             },
             free: whole.gravity.is_none() && whole.drag.is_none(),
             sleep_speed: SLEEP_SPEED * gravity / LESSON_GRAVITY,
-            velocity_passes: if gravity > 0.0 {
-                LOADED_VELOCITY_PASSES
-            } else {
-                1
-            },
         }
     }
 }
@@ -859,7 +864,7 @@ impl ContactSet<'_> {
         for _ in 0..stepping.motion.iterations {
             self.integrate_velocities(balls, stepping);
             self.warm_start(balls);
-            for _ in 0..stepping.velocity_passes {
+            for _ in 0..stepping.sub.velocity_passes() {
                 self.solve(balls, stepping.sub);
             }
             self.integrate_positions(balls, stepping);
