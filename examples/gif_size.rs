@@ -12,7 +12,7 @@ use std::process::Command;
 use std::time::{Duration, Instant};
 
 use bouncing_ball::scene::file::{preset, PRESETS};
-use bouncing_ball::{run, Outputs};
+use bouncing_ball::{run, Job, Role};
 
 /// `gifsicle -O3` of each preset's GIF as the encoder wrote it before it chose per-frame
 /// encodings (one global 256- or 128-entry table, no transparency), measured once with
@@ -72,7 +72,7 @@ fn main() {
     println!("|------------|----------:|-------------------------:|--------------:|-------------------------------:|--------------:|-----------------:|-----------------:|");
     for (name, _) in PRESETS {
         let scene = preset(name, 1).expect("a bundled preset");
-        let outputs = Outputs::new(
+        let outputs = Job::pictures(
             dir.path().join(format!("{name}.gif")),
             dir.path().join(format!("{name}.png")),
         );
@@ -85,9 +85,11 @@ fn main() {
             .collect();
         times.sort();
         let median_ms = times[times.len() / 2].as_secs_f64() * 1e3;
-        let ours = std::fs::metadata(&outputs.gif).expect("the GIF").len();
+        let ours = std::fs::metadata(outputs.path(Role::Gif).unwrap())
+            .expect("the GIF")
+            .len();
         let optimised = if gifsicle_found {
-            gifsicle_o3(&outputs.gif)
+            gifsicle_o3(outputs.path(Role::Gif).unwrap())
         } else {
             None
         };

@@ -192,7 +192,7 @@ fn main() -> std::io::Result<()> {
     let renderer = Renderer::new(&scene).expect("the lesson's colours fit a GIF");
     // Written to a temporary file and renamed into place at the end, so a failed or
     // interrupted run never leaves half a GIF (or clobbers the last good one).
-    let mut file = AtomicFile::create(Path::new("starter.gif")).map_err(std::io::Error::other)?;
+    let file = AtomicFile::create(Path::new("starter.gif")).map_err(std::io::Error::other)?;
     let out = BufWriter::new(file.file());
     let mut gif = GifWriter::new(
         out,

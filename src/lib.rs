@@ -10,16 +10,21 @@
 //! - [`gif`]: the animated GIF, streamed out.
 //! - [`plot`]: height, speed and energy of the run against frame, as SVG or PNG.
 //!
-//! At the top, [`run`] ties them together for the command line, [`compare`] runs one scene
-//! by several methods side by side against a reference, [`sweep`] runs it once per value of
-//! one setting and tiles the runs into one GIF. [`budget`] works out before the first frame
-//! what a scene will cost, [`output`] makes files appear whole or not at all and only where a
-//! file belongs, [`stop`] ends a run cleanly on a signal, [`trace`] writes the CSV,
-//! [`progress`] shows how far a long run is, and [`messages`] says what went wrong in one line.
+//! At the top, three commands are peers that never import each other: [`run`] (the main
+//! command) ties the stages together, [`compare`] runs one scene by several methods side by
+//! side against a reference, [`sweep`] runs it once per value of one setting and tiles the
+//! runs into one GIF. Under all three, [`job`] does what they share: it opens and commits the
+//! outputs, checks for a stop, shows the progress and sums up what was written. [`budget`]
+//! works out before the first frame what a scene will cost, [`output`] makes files appear
+//! whole or not at all and only where a file belongs, [`stop`] ends a run cleanly on a
+//! signal, [`trace`] writes the CSV, [`progress`] shows how far a long run is. Above them,
+//! [`cli`] reads the command line and [`messages`] says what went wrong in one line.
 
 pub mod budget;
+pub mod cli;
 pub mod compare;
 pub mod gif;
+pub mod job;
 pub mod messages;
 pub mod output;
 pub mod physics;
@@ -32,5 +37,6 @@ pub mod stop;
 pub mod sweep;
 pub mod trace;
 
-pub use run::{run, Outputs, RunError, Summary};
+pub use job::{Job, Role, RunError, Summary};
+pub use run::run;
 pub use scene::{BallSpec, Scene};

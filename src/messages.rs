@@ -1,10 +1,11 @@
 //! The command line's messages, each one line: a refused flag with what is allowed and the
 //! nearest name, a value the scene cannot take named as the user typed it, a failed run, and
-//! the summary of what a run wrote. `main.rs` prints them; nothing here parses or runs.
+//! the summary of what a run wrote. The command line ([`crate::cli`]) prints them; nothing
+//! here parses or runs.
 
 use std::process::ExitCode;
 
-use crate::run::{RunError, Summary};
+use crate::job::{RunError, Summary};
 use crate::scene::InvalidValue;
 
 /// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
@@ -36,14 +37,48 @@ pub fn summary_line(summary: &Summary) -> String {
     format!("wrote {list} in {ms:.1} ms")
 }
 
-/// A command-line error in one line (clap spreads it over several): what was wrong, what is
-/// allowed and, for a near miss, the nearest name. Help and version print as clap prints them.
-pub fn refuse(error: clap::Error) -> ExitCode {
-    use clap::error::ErrorKind::{DisplayHelp, DisplayVersion};
-    use clap::error::{ContextKind, ContextValue};
-    if matches!(error.kind(), DisplayHelp | DisplayVersion) {
-        error.exit();
+/// What the user is told when a command fails: one line on stderr, and the exit code (2 for
+/// input the program cannot use, 1 for a file it cannot write, 128 + a signal's number).
+#[derive(Debug)]
+pub struct Failure {
+    pub line: String,
+    pub code: u8,
+}
+
+impl Failure {
+    /// Prints the line and gives the exit code.
+    pub fn report(self) -> ExitCode {
+        eprintln!("{}", self.line);
+        ExitCode::from(self.code)
     }
+
+    /// A run's error; a value the scene cannot take is named as the user knows it (`typed`
+    /// says which settings they typed).
+    pub fn of_run(error: &RunError, typed: impl Fn(&str) -> bool) -> Failure {
+        let line = match error {
+            RunError::Invalid(bad) => format!("error: {}", refuse_value(bad, typed)),
+            other => format!("error: {other}"),
+        };
+        Failure {
+            line,
+            code: error.exit_code(),
+        }
+    }
+
+    /// Input the program cannot use (exit 2).
+    pub fn input(why: impl std::fmt::Display) -> Failure {
+        Failure {
+            line: format!("error: {why}"),
+            code: 2,
+        }
+    }
+}
+
+/// A command-line error in one line (clap spreads it over several): what was wrong, what is
+/// allowed and, for a near miss, the nearest name. (Help and the version are no error: the
+/// command line prints them as clap does.)
+pub fn refuse(error: clap::Error) -> Failure {
+    use clap::error::{ContextKind, ContextValue};
     let text = |kind| match error.get(kind) {
         Some(ContextValue::String(text)) => Some(text.clone()),
         Some(ContextValue::Strings(texts)) if !texts.is_empty() => Some(texts.join(" or ")),
@@ -83,8 +118,10 @@ pub fn refuse(error: clap::Error) -> ExitCode {
             line += &format!("; did you mean {near}?");
         }
     }
-    eprintln!("{line}; see --help");
-    ExitCode::from(2)
+    Failure {
+        line: format!("{line}; see --help"),
+        code: 2,
+    }
 }
 
 /// A value the scene cannot take, named as the user knows it: the flag they typed, or the
@@ -114,12 +151,11 @@ pub fn whole_number(text: &str) -> Result<u64, String> {
         .map_err(|_| format!("must be a whole number from 0 to {}", u64::MAX))
 }
 
-/// A run's error in one line; a value the scene cannot take is named as the user knows it
-/// (`typed` says which settings they typed).
-pub fn fail(error: &RunError, typed: impl Fn(&str) -> bool) -> ExitCode {
-    match error {
-        RunError::Invalid(bad) => eprintln!("error: {}", refuse_value(bad, typed)),
-        other => eprintln!("error: {other}"),
+/// A number of seconds from 0 up, fractions allowed (`--time-budget 0.5`), said so when it
+/// is not.
+pub fn seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(value) if value.is_finite() && value >= 0.0 => Ok(value),
+        _ => Err("must be a number of seconds from 0 up, e.g. 0.5 or 3600".to_string()),
     }
-    ExitCode::from(error.exit_code())
 }

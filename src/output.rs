@@ -310,9 +310,9 @@ impl AtomicFile {
         })
     }
 
-    /// Where the bytes go until the commit.
-    pub fn file(&mut self) -> &mut File {
-        self.temp.as_file_mut()
+    /// Where the bytes go until the commit (`&File` writes, as `File` does).
+    pub fn file(&self) -> &File {
+        self.temp.as_file()
     }
 
     /// The path as given.

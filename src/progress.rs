@@ -1,6 +1,10 @@
-//! The progress bar: shown on stderr for a run that looks to take more than a second, and
+//! The progress bar: shown on stderr for a job that looks to take more than a second, and
 //! only when stderr is a terminal someone is watching. Knows frames and time, nothing else.
+//!
+//! A job may run its frames in several passes (`compare` runs its reference, then draws every
+//! method): each pass adds its frames to the bar's total as it starts.
 
+use std::cell::Cell;
 use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
@@ -12,57 +16,68 @@ pub const WORTH_A_BAR: Duration = Duration::from_secs(1);
 pub const SAMPLE: Duration = Duration::from_millis(100);
 
 /// Whether a run that has done `done` of `total` frames in `elapsed` looks long enough for a bar.
-pub fn looks_long(elapsed: Duration, done: u32, total: u32) -> bool {
+pub fn looks_long(elapsed: Duration, done: u64, total: u64) -> bool {
     if elapsed < SAMPLE || done == 0 {
         return false;
     }
-    elapsed.mul_f64(f64::from(total) / f64::from(done)) > WORTH_A_BAR
+    elapsed.mul_f64(total as f64 / done as f64) > WORTH_A_BAR
 }
 
-/// A run's progress over its frames: the bar counts from the first frame, so its estimate
-/// of the time left is sound, but it is drawn only once the run looks long; it is cleared
-/// when this is dropped, so the summary line prints on a clean terminal.
+/// A job's progress over its frames: the bar counts from the first frame, so its estimate
+/// of the time left is sound, but it is drawn only once the job looks long; it is cleared
+/// when the job is done or dropped, so the summary line prints on a clean terminal.
+#[derive(Debug)]
 pub struct Progress {
-    total: u32,
     started: Instant,
     /// None when asked not to show one (`--quiet`) or nobody would see it.
     bar: Option<ProgressBar>,
-    drawn: bool,
+    drawn: Cell<bool>,
 }
 
 impl Progress {
-    /// Progress over `total` frames; `wanted` false means never show a bar.
-    pub fn new(total: u32, wanted: bool) -> Progress {
+    /// Progress over no frames yet; `wanted` false means never show a bar.
+    pub fn new(wanted: bool) -> Progress {
         let visible = wanted && std::io::stderr().is_terminal();
         let style = ProgressStyle::with_template("{wide_bar} {pos}/{len} frames, {eta} left")
             .unwrap_or_else(|_| ProgressStyle::default_bar());
         let bar = visible.then(|| {
-            ProgressBar::with_draw_target(Some(total.into()), ProgressDrawTarget::hidden())
-                .with_style(style)
+            ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::hidden()).with_style(style)
         });
         Progress {
-            total,
             started: Instant::now(),
             bar,
-            drawn: false,
+            drawn: Cell::new(false),
         }
     }
 
-    /// Notes that `done` frames are finished.
-    pub fn frames_done(&mut self, done: u32) {
+    /// Adds a pass of `frames` frames to the total.
+    pub fn add_frames(&self, frames: u32) {
+        if let Some(bar) = &self.bar {
+            bar.inc_length(frames.into());
+        }
+    }
+
+    /// Notes that one more frame is finished.
+    pub fn frame_done(&self) {
         let Some(bar) = &self.bar else { return };
-        bar.set_position(done.into());
-        if !self.drawn && looks_long(self.started.elapsed(), done, self.total) {
+        bar.inc(1);
+        let (done, total) = (bar.position(), bar.length().unwrap_or(0));
+        if !self.drawn.get() && looks_long(self.started.elapsed(), done, total) {
             bar.set_draw_target(ProgressDrawTarget::stderr());
-            self.drawn = true;
+            self.drawn.set(true);
+        }
+    }
+
+    /// Clears the bar off the terminal.
+    pub fn clear(&self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
         }
     }
 }
 
 impl Drop for Progress {
     fn drop(&mut self) {
-        if let Some(bar) = &self.bar {
-            bar.finish_and_clear();
-        }
+        self.clear();
     }
 }

@@ -23,7 +23,7 @@ use std::time::Duration;
 
 use bouncing_ball::budget::Estimate;
 use bouncing_ball::scene::file;
-use bouncing_ball::{run, Outputs};
+use bouncing_ball::{run, Job, Role};
 use common::process::{args, changes, run_capped, snapshot, Caps, Finished, OddFolder, Request};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -587,13 +587,13 @@ fn generated_scenes_run_through_the_library_write_decodable_files_or_nothing() {
             }
             ran.set(ran.get() + 1);
             let dir = tempfile::tempdir().unwrap();
-            let outputs = Outputs::new(dir.path().join("a.gif"), dir.path().join("a.png"));
+            let outputs = Job::pictures(dir.path().join("a.gif"), dir.path().join("a.png"));
             match run(&scene, &outputs) {
                 Ok(summary) => {
-                    let gif = common::decode_gif(&outputs.gif);
+                    let gif = common::decode_gif(outputs.path(Role::Gif).unwrap());
                     let frame_cs = (scene.frame_ms / 10) as u16;
                     prop_assert_eq!(gif.timeline(frame_cs).len() as u32, summary.frames);
-                    prop_assert!(image::open(&outputs.png).is_ok());
+                    prop_assert!(image::open(outputs.path(Role::Png).unwrap()).is_ok());
                 }
                 Err(e) => {
                     prop_assert_eq!(e.to_string().lines().count(), 1, "{}", e);

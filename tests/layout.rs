@@ -299,3 +299,60 @@ fn the_cycle_finder_finds_a_cycle() {
     );
     assert_eq!(found, BTreeSet::from(["physics::walls".to_string()]));
 }
+
+/// The commands that run a scene: peers above the job driver, which does what they share.
+const COMMANDS: [&str; 3] = ["run", "compare", "sweep"];
+
+#[test]
+fn the_commands_are_peers_that_never_import_each_other() {
+    let graph = graph();
+    let command_of = |m: &str| COMMANDS.iter().find(|c| m.split("::").next() == Some(c));
+    for (module, imported) in &graph {
+        let Some(own) = command_of(module) else {
+            continue;
+        };
+        for other in imported {
+            let theirs = command_of(other);
+            assert!(
+                theirs.is_none_or(|theirs| theirs == own),
+                "{module} imports {other}: run, compare and sweep share only what src/job/ does"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_commands_leave_temporary_files_summaries_and_stop_checks_to_the_job() {
+    for (module, text) in modules() {
+        if !COMMANDS
+            .iter()
+            .any(|c| module.split("::").next() == Some(c))
+        {
+            continue;
+        }
+        let code = code(&text);
+        for own in ["AtomicFile", "commit_all", "requested()", "Summary {"] {
+            assert!(
+                !code.contains(own),
+                "{module} uses {own}: opening, committing, stopping and summing up are the job's"
+            );
+        }
+    }
+}
+
+#[test]
+fn main_rs_is_the_learners_constants_then_a_short_dispatch() {
+    let text = fs::read_to_string("src/main.rs").unwrap();
+    let lines = text.lines().count();
+    assert!(lines <= 150, "src/main.rs has {lines} lines; at most 150");
+    let first_const = text.find("\nconst ").expect("the learner's constants");
+    let first_fn = text.find("\nfn ").expect("lesson_scene and main");
+    assert!(
+        first_const < first_fn,
+        "the constants come before any function in src/main.rs"
+    );
+    assert!(
+        !text.contains("#[derive(") && text.matches("ExitCode::").count() <= 2,
+        "src/main.rs holds no clap structs and has one exit path"
+    );
+}

@@ -11,7 +11,7 @@ use std::collections::BTreeSet;
 use bouncing_ball::render::ellipse::fill_circle;
 use bouncing_ball::render::IndexedFrame;
 use bouncing_ball::scene::file as scene_file;
-use bouncing_ball::{run, Outputs};
+use bouncing_ball::{run, Job, Role};
 use common::{decode_gif, lesson_scene, REBLESS};
 
 /// CRC-32 of each of the script's frames for `scene`, in frame order.
@@ -35,12 +35,12 @@ fn every_frame_of_our_gifs_equals_the_lesson_scripts_frame() {
         } else {
             scene_file::preset(name, 1).unwrap()
         };
-        let outputs = Outputs::new(
+        let outputs = Job::pictures(
             dir.path().join(format!("{name}.gif")),
             dir.path().join(format!("{name}.png")),
         );
         run(&scene, &outputs).unwrap();
-        let ours: Vec<u32> = decode_gif(&outputs.gif)
+        let ours: Vec<u32> = decode_gif(outputs.path(Role::Gif).unwrap())
             .frames
             .iter()
             .map(|frame| crc32fast::hash(frame.as_raw()))

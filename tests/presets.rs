@@ -7,7 +7,7 @@ mod common;
 use std::path::Path;
 
 use bouncing_ball::scene::file::{self as scene_file, PRESETS};
-use bouncing_ball::{run, Outputs};
+use bouncing_ball::{run, Job, Role};
 use common::{decode_gif, render_frames};
 
 #[test]
@@ -17,12 +17,12 @@ fn every_preset_gif_in_scenes_matches_a_fresh_render_byte_for_byte() {
     let mut stale = Vec::new();
     for (name, _) in PRESETS {
         let scene = scene_file::preset(name, 1).unwrap();
-        let outputs = Outputs::new(
+        let outputs = Job::pictures(
             dir.path().join(format!("{name}.gif")),
             dir.path().join(format!("{name}.png")),
         );
         run(&scene, &outputs).unwrap_or_else(|e| panic!("preset {name}: {e}"));
-        let fresh = std::fs::read(&outputs.gif).unwrap();
+        let fresh = std::fs::read(outputs.path(Role::Gif).unwrap()).unwrap();
         let committed_path =
             Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.gif"));
         if update {

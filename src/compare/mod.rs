@@ -22,21 +22,16 @@ pub mod plot;
 pub mod reference;
 pub mod table;
 
-use std::io::{BufWriter, Write};
-use std::path::PathBuf;
-use std::time::Instant;
+use std::io::Write;
 
-use crate::budget::{Budget, Estimate};
-use crate::gif::GifWriter;
-use crate::output::{self, AtomicFile, Output, OutputError};
+use crate::budget::Estimate;
+use crate::job::{Files, Job, Role, RunError, Summary};
+use crate::output::OutputError;
 use crate::physics::{Ball, Simulation};
 use crate::plot::Format;
-use crate::render::write_png;
-use crate::run::{RunError, Summary};
 use crate::scene::{InvalidValue, Scene};
-use crate::stop::Stop;
 
-use checks::{balls_and_frames, check_finite, stop_if_asked};
+use checks::{balls_and_frames, check_finite};
 use draw::{LegendRow, Picture};
 use measure::{Energy, Outcome, Stray};
 use methods::Method;
@@ -45,41 +40,6 @@ use reference::Reference;
 /// The most ball-frames a comparison takes on: it keeps the reference's every centre (and
 /// while converging, two runs of it), 16 bytes a ball-frame, so this bounds that to 128 MB.
 pub const MAX_BALL_FRAMES: u64 = 1 << 22;
-
-/// What to compare and where the results go.
-#[derive(Clone, Debug)]
-pub struct CompareOutputs {
-    pub methods: Vec<Method>,
-    pub gif: PathBuf,
-    pub png: PathBuf,
-    /// The table as CSV, when asked for.
-    pub table: Option<PathBuf>,
-    /// The work-precision diagram (SVG, or PNG for `.png`), when asked for.
-    pub plot: Option<PathBuf>,
-    /// The scene file the scene was read from, which no output may replace.
-    pub scene_file: Option<PathBuf>,
-    /// What each method's run may be predicted to need before the comparison is refused.
-    pub budget: Budget,
-    /// Set by a signal: the comparison stops and writes nothing.
-    pub stop: Stop,
-}
-
-impl CompareOutputs {
-    /// Every output, in the order they are renamed into place.
-    fn list(&self) -> Vec<Output<'_>> {
-        let mut list = vec![
-            Output::picture("--gif", &self.gif, "gif"),
-            Output::picture("--png", &self.png, "png"),
-        ];
-        if let Some(path) = &self.table {
-            list.push(Output::file("--table", path));
-        }
-        if let Some(path) = &self.plot {
-            list.push(Output::file("--plot", path));
-        }
-        list
-    }
-}
 
 /// What a comparison found and wrote.
 #[derive(Clone, Debug)]
@@ -114,27 +74,27 @@ fn check_size(scene: &Scene) -> Result<(), InvalidValue> {
     })
 }
 
-/// Compares `outputs.methods` on `scene` and writes the outputs; on any error no output file
-/// is left half-written and no existing file is changed.
-pub fn compare(scene: &Scene, outputs: &CompareOutputs) -> Result<Comparison, RunError> {
-    let started = Instant::now();
+/// Compares `methods` on `scene` and writes `job`'s outputs (the GIF, the still, the table
+/// as CSV, the work-precision plot); on any error no output file is left half-written and no
+/// existing file is changed.
+pub fn compare(scene: &Scene, methods: &[Method], job: &Job) -> Result<Comparison, RunError> {
     scene.validate()?;
     check_size(scene)?;
-    for method in &outputs.methods {
-        Estimate::within(&method.on(scene), &outputs.budget)?;
+    for method in methods {
+        Estimate::within(&method.on(scene), &job.budget)?;
     }
-    output::check(&outputs.list(), outputs.scene_file.as_deref())?;
-    let plot_format = outputs.plot.as_deref().map(Format::of).transpose()?;
-    let mut files = Files::create(outputs)?;
+    job.check()?;
+    let plot_format = job.path(Role::Plot).map(Format::of).transpose()?;
+    let files = job.open(&[])?;
 
     let bare = without_trails(scene);
-    let reference = Reference::of(&bare, &outputs.stop)?;
-    let (strays, ends) = animate(scene, outputs, &reference, &mut files)?;
-    let timings = measure::time_all(&bare, &outputs.methods);
+    let reference = Reference::of(&bare, job)?;
+    let (strays, ends) = animate(scene, methods, job, &reference, &files)?;
+    let timings = measure::time_all(&bare, methods);
     let drifts = energy_drifts(scene, &reference, &ends);
-    let outcomes: Vec<Outcome> = (0..outputs.methods.len())
+    let outcomes: Vec<Outcome> = (0..methods.len())
         .map(|k| Outcome {
-            method: outputs.methods[k],
+            method: methods[k],
             timing: timings[k],
             stray: strays[k].clone(),
             energy_drift: drifts[k],
@@ -149,18 +109,19 @@ pub fn compare(scene: &Scene, outputs: &CompareOutputs) -> Result<Comparison, Ru
         balls_and_frames(scene),
         reference.method
     );
-    files.write_table_and_plot(&outcomes, chaotic, scene.frames, plot_format, &title)?;
-    stop_if_asked(&outputs.stop, scene.frames, scene.frames)?;
-    let sizes = files.commit()?;
-    let paths = outputs.list().into_iter().map(|o| o.path.to_path_buf());
+    write_table_and_plot(
+        &files,
+        &outcomes,
+        chaotic,
+        scene.frames,
+        plot_format,
+        &title,
+    )?;
+    let summary = job.commit(files, scene.frames)?;
     Ok(Comparison {
         outcomes,
         table,
-        summary: Summary {
-            frames: scene.frames,
-            files: paths.zip(sizes).collect(),
-            elapsed: started.elapsed(),
-        },
+        summary,
     })
 }
 
@@ -215,31 +176,23 @@ fn widest_rows(methods: &[Method], frames: u32) -> Vec<String> {
 /// Returns how far each strayed, and its balls in the last frame.
 fn animate(
     scene: &Scene,
-    outputs: &CompareOutputs,
+    methods: &[Method],
+    job: &Job,
     reference: &Reference,
-    files: &mut Files,
+    files: &Files,
 ) -> Result<(Vec<Stray>, Vec<Vec<Ball>>), RunError> {
-    let methods = &outputs.methods;
     let chaotic = chaotic(scene);
     let reference_row = format!("reference {} (outlines)", reference.method);
     let mut widest = widest_rows(methods, scene.frames);
     widest.push(reference_row.clone());
     let mut picture = Picture::new(scene, methods.len(), reference_row, &widest)?;
-    let (width, height) = picture.size();
-    let gif_error = OutputError::at(&outputs.gif);
-    let mut gif = GifWriter::new(
-        BufWriter::new(files.gif.file()),
-        width as u16,
-        height as u16,
-        picture.palette(),
-        scene.frame_ms,
-    )
-    .map_err(&gif_error)?;
+    let mut gif = files.start_gif(picture.size(), picture.palette(), scene.frame_ms)?;
     let mut simulations: Vec<Simulation> =
         methods.iter().map(|m| m.on(scene).simulation()).collect();
     let mut strays = vec![Stray::default(); methods.len()];
+    job.progress().add_frames(scene.frames);
     for n in 0..scene.frames {
-        stop_if_asked(&outputs.stop, n, scene.frames)?;
+        job.stop_if_asked(n, scene.frames)?;
         let centres = reference.trajectory.frame(n as usize);
         for ((simulation, stray), &method) in simulations.iter_mut().zip(&mut strays).zip(methods) {
             simulation.step();
@@ -256,66 +209,30 @@ fn animate(
             .collect();
         let balls: Vec<&[Ball]> = simulations.iter().map(Simulation::balls).collect();
         picture.draw(&balls, centres, &legend);
-        gif.write_frame(picture.frame()).map_err(&gif_error)?;
+        gif.write_frame(picture.frame())?;
+        job.progress().frame_done();
     }
-    gif.send_queued().map_err(&gif_error)?;
-    let mut png = BufWriter::new(files.png.file());
-    write_png(&mut png, picture.frame(), picture.palette())
-        .and_then(|()| png.flush())
-        .map_err(OutputError::at(&outputs.png))?;
-    drop(png);
-    gif.finish()
-        .and_then(|mut out| out.flush())
-        .map_err(&gif_error)?;
+    files.finish_pictures(gif, picture.frame(), picture.palette())?;
     let ends = simulations.iter().map(|s| s.balls().to_vec()).collect();
     Ok((strays, ends))
 }
 
-/// Every file a comparison writes, open from before the work until they all go into place.
-struct Files {
-    gif: AtomicFile,
-    png: AtomicFile,
-    table: Option<AtomicFile>,
-    plot: Option<AtomicFile>,
-}
-
-impl Files {
-    fn create(outputs: &CompareOutputs) -> Result<Files, OutputError> {
-        let optional = |path: &Option<PathBuf>| path.as_deref().map(AtomicFile::create).transpose();
-        Ok(Files {
-            gif: AtomicFile::create(&outputs.gif)?,
-            png: AtomicFile::create(&outputs.png)?,
-            table: optional(&outputs.table)?,
-            plot: optional(&outputs.plot)?,
-        })
+/// Writes the CSV and the plot, each if asked for (`format` is the plot's).
+fn write_table_and_plot(
+    files: &Files,
+    outcomes: &[Outcome],
+    chaotic: bool,
+    frames: u32,
+    format: Option<Format>,
+    title: &str,
+) -> Result<(), OutputError> {
+    if let Some(out) = files.writer(Role::Table)? {
+        table::write_csv(out, outcomes, chaotic).map_err(files.error_at(Role::Table))?;
     }
-
-    /// Writes the CSV and the plot, each if asked for (`format` is the plot's).
-    fn write_table_and_plot(
-        &mut self,
-        outcomes: &[Outcome],
-        chaotic: bool,
-        frames: u32,
-        format: Option<Format>,
-        title: &str,
-    ) -> Result<(), OutputError> {
-        if let Some(file) = self.table.as_mut() {
-            let out = BufWriter::new(file.file());
-            table::write_csv(out, outcomes, chaotic).map_err(OutputError::at(file.path()))?;
-        }
-        if let (Some(file), Some(format)) = (self.plot.as_mut(), format) {
-            plot::write(file.file(), format, outcomes, chaotic, frames, title)
-                .map_err(OutputError::at(file.path()))?;
-        }
-        Ok(())
+    if let (Some(mut out), Some(format)) = (files.writer(Role::Plot)?, format) {
+        plot::write(&mut out, format, outcomes, chaotic, frames, title)
+            .and_then(|()| out.flush())
+            .map_err(files.error_at(Role::Plot))?;
     }
-
-    /// Puts every file in place; returns their sizes in the order of `CompareOutputs::list`.
-    fn commit(self) -> Result<Vec<u64>, OutputError> {
-        let files = [self.gif, self.png]
-            .into_iter()
-            .chain(self.table)
-            .chain(self.plot);
-        output::commit_all(files.collect())
-    }
+    Ok(())
 }

@@ -9,11 +9,10 @@ use crate::physics::{Ball, CollisionMode, Integrator, Vec2};
 use crate::scene::spec::MAX_SUBSTEPS;
 use crate::scene::Scene;
 
-use super::checks::{check_finite, stop_if_asked};
+use super::checks::check_finite;
 use super::methods::Method;
 use super::table::short;
-use crate::run::RunError;
-use crate::stop::Stop;
+use crate::job::{Job, RunError};
 
 /// The most ball-steps one run of the reference may take, weighted by what a step costs
 /// (a ball-ball collision step counts as [`COLLIDING_STEP_WEIGHT`]): a second or two for one
@@ -73,22 +72,23 @@ pub enum Verdict {
 }
 
 impl Reference {
-    /// The reference of a validated `scene`, checking `stop` between frames.
-    pub fn of(scene: &Scene, stop: &Stop) -> Result<Reference, RunError> {
+    /// The reference of a validated `scene`, run as part of `job` (its stop check and its
+    /// progress bar).
+    pub fn of(scene: &Scene, job: &Job) -> Result<Reference, RunError> {
         let rk4 = |substeps| Method {
             integrator: Integrator::Rk4,
             substeps,
             collisions: CollisionMode::Exact,
         };
         let mut method = rk4(1);
-        let mut trajectory = run(scene, method, stop)?;
+        let mut trajectory = run(scene, method, job)?;
         let mut agreement = f64::INFINITY;
         let verdict = loop {
             let finer = rk4(method.substeps * 2);
             if finer.substeps > MAX_SUBSTEPS || work(scene, finer.substeps) > MAX_REFERENCE_STEPS {
                 break Verdict::AtLimit;
             }
-            let next = run(scene, finer, stop)?;
+            let next = run(scene, finer, job)?;
             let before = agreement;
             agreement = next.farthest_from(&trajectory);
             (method, trajectory) = (finer, next);
@@ -143,15 +143,17 @@ fn work(scene: &Scene, substeps: u32) -> u64 {
 }
 
 /// Every centre of a run of `scene` solved by `method`.
-fn run(scene: &Scene, method: Method, stop: &Stop) -> Result<Trajectory, RunError> {
+fn run(scene: &Scene, method: Method, job: &Job) -> Result<Trajectory, RunError> {
     let mut simulation = method.on(scene).simulation();
     let balls = scene.balls.len();
     let mut centres = Vec::with_capacity(balls * scene.frames as usize);
+    job.progress().add_frames(scene.frames);
     for n in 0..scene.frames {
-        stop_if_asked(stop, n, scene.frames)?;
+        job.stop_if_asked(n, scene.frames)?;
         simulation.step();
         check_finite(scene, method, simulation.balls(), n)?;
         centres.extend(simulation.balls().iter().map(|b| b.position()));
+        job.progress().frame_done();
     }
     let last = simulation.balls().to_vec();
     Ok(Trajectory {

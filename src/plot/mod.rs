@@ -121,7 +121,7 @@ pub fn save_png(
     size: (u32, u32),
     draw: impl FnOnce(&Canvas) -> Result<(), CanvasError>,
 ) -> Result<(), OutputError> {
-    let mut file = AtomicFile::create(path)?;
+    let file = AtomicFile::create(path)?;
     write_png(file.file(), size, |root| {
         root.fill(&WHITE)?;
         draw(root)?;

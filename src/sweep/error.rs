@@ -1,7 +1,7 @@
 //! Why a sweep cannot run, in one line each, and the exit code each gives.
 
+use crate::job::RunError;
 use crate::render::tile::TileError;
-use crate::run::RunError;
 use crate::scene::SceneFileError;
 
 /// A sweep that cannot run, said in one line.

@@ -18,5 +18,5 @@ pub mod run;
 pub mod values;
 
 pub use error::SweepError;
-pub use run::{run, SweepOutputs};
+pub use run::run;
 pub use values::{keys, Change, Panel, Sweep};
