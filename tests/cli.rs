@@ -376,3 +376,44 @@ fn an_unwritable_output_exits_1_and_leaves_no_file_or_clobbered_file() {
         .collect();
     assert_eq!(files.len(), 1, "no temporary file left behind: {files:?}");
 }
+
+#[test]
+fn the_shared_flags_may_come_before_a_subcommand_and_the_main_commands_may_not() {
+    let dir = temp_dir();
+    let before = run_in(
+        dir.path(),
+        &["-q", "--time-budget", "600", "compare", "-n", "5"],
+    );
+    assert!(
+        before.status.success(),
+        "-q before compare: {}",
+        stderr(&before)
+    );
+    assert!(before.stdout.is_empty(), "-q keeps compare silent");
+    assert!(dir.path().join("compare.gif").exists());
+    let main_flag = run_in(dir.path(), &["-p", "moon", "compare", "-n", "5"]);
+    let said = stderr(&main_flag);
+    assert_eq!(main_flag.status.code(), Some(2), "{said}");
+    assert!(
+        said.lines().count() == 1
+            && said.contains("--preset cannot come before the subcommand compare"),
+        "one line naming the flag: {said}"
+    );
+}
+
+#[test]
+fn the_time_budget_takes_fractions_of_a_second_and_says_what_it_allows() {
+    let dir = temp_dir();
+    let fraction = run_in(dir.path(), &["--time-budget", "0.5", "-n", "5", "-q"]);
+    assert!(fraction.status.success(), "{}", stderr(&fraction));
+    for bad in ["-1", "abc", "inf"] {
+        let refused = run_in(dir.path(), &["--time-budget", bad]);
+        let said = stderr(&refused);
+        assert_eq!(refused.status.code(), Some(2), "{bad}: {said}");
+        assert!(
+            said.contains(&format!("--time-budget {bad} is not allowed"))
+                && said.contains("number of seconds from 0 up"),
+            "{bad}: {said}"
+        );
+    }
+}
