@@ -4,7 +4,7 @@
 //! one line and an exit code.
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::error::ErrorKind;
 use clap::parser::ValueSource;
@@ -43,9 +43,11 @@ struct Args {
     /// Where to write the animated GIF
     #[arg(short = 'o', long, default_value = "bouncing_ball.gif")]
     gif: PathBuf,
-    /// Where to write the still PNG (the last frame)
-    #[arg(long, default_value = "bouncing_ball.png")]
-    png: PathBuf,
+    /// Where to write the still PNG (the last frame) [default: the GIF's name with .png]
+    #[arg(long)]
+    png: Option<PathBuf>,
+    #[command(flatten)]
+    skip: SkipArgs,
     /// Also write every frame's state as CSV (frame,ball,x,y,vx,vy); - for standard output
     #[arg(long)]
     trace: Option<PathBuf>,
@@ -124,15 +126,43 @@ struct CompareArgs {
     /// Where to write the animated GIF of all methods together
     #[arg(short = 'o', long, default_value = "compare.gif")]
     gif: PathBuf,
-    /// Where to write the still PNG (the last frame)
-    #[arg(long, default_value = "compare.png")]
-    png: PathBuf,
+    /// Where to write the still PNG (the last frame) [default: the GIF's name with .png]
+    #[arg(long)]
+    png: Option<PathBuf>,
+    #[command(flatten)]
+    skip: SkipArgs,
     /// Also write the table as CSV
     #[arg(long, value_name = "PATH")]
     table: Option<PathBuf>,
     /// Also draw error against time per ball-frame, log-log (SVG; PNG if PATH ends in .png)
     #[arg(long, value_name = "PATH")]
     plot: Option<PathBuf>,
+}
+
+/// The pictures a command may leave out, for a run that only traces, plots or tabulates.
+#[derive(clap::Args, Debug)]
+struct SkipArgs {
+    /// Write no GIF
+    #[arg(long, conflicts_with = "gif")]
+    no_gif: bool,
+    /// Write no PNG
+    #[arg(long, conflicts_with = "png")]
+    no_png: bool,
+}
+
+impl SkipArgs {
+    /// `job` with the GIF at `gif` and the still at `png` (by default the GIF's name with
+    /// `.png`), each unless left out.
+    fn pictures(&self, job: Job, gif: &Path, png: Option<&PathBuf>) -> Job {
+        let job = match self.no_gif {
+            true => job,
+            false => job.with(Role::Gif, gif),
+        };
+        match self.no_png {
+            true => job,
+            false => job.with(Role::Png, png.cloned().unwrap_or(gif.with_extension("png"))),
+        }
+    }
 }
 
 /// `sweep`: the setting and its values, the scene, and where the tiled GIF goes.
@@ -146,9 +176,9 @@ struct SweepArgs {
     /// Where to write the tiled GIF
     #[arg(short = 'o', long, default_value = "sweep.gif")]
     gif: PathBuf,
-    /// Also write the last tiled frame as a PNG
-    #[arg(long)]
-    png: Option<PathBuf>,
+    /// Also write the last tiled frame as a PNG (without PATH: the GIF's name with .png)
+    #[arg(long, value_name = "PATH", num_args = 0..=1)]
+    png: Option<Option<PathBuf>>,
 }
 
 /// One command, parsed, with what every command shares.
@@ -252,14 +282,16 @@ impl Cli {
     /// The main command: the scene, its GIF and still, and a trace and a plot if asked for.
     fn run_scene(&self, args: &Args) -> Result<(), Failure> {
         let scene = args.scene.scene(&self.lesson).map_err(Failure::input)?;
-        let mut job = self.job(&args.scene).with(Role::Gif, &args.gif);
-        job = job.with(Role::Png, &args.png);
+        let mut job = args
+            .skip
+            .pictures(self.job(&args.scene), &args.gif, args.png.as_ref());
         if let Some(path) = &args.trace {
             job = job.with(Role::Trace, path);
         }
         if let Some(path) = args.plot.as_ref().or(scene.plot.as_ref()) {
             job = job.with(Role::Plot, path);
         }
+        nothing_left_out(&job, "--trace or --plot")?;
         let summary = crate::run(&scene, &job).map_err(|error| {
             Failure::of_run(&error, |name| match name {
                 "plot" => args.plot.is_some(),
@@ -279,14 +311,16 @@ impl Cli {
             }
         }
         let scene = args.scene.scene(&self.lesson).map_err(Failure::input)?;
-        let mut job = self.job(&args.scene).with(Role::Gif, &args.gif);
-        job = job.with(Role::Png, &args.png);
+        let mut job = args
+            .skip
+            .pictures(self.job(&args.scene), &args.gif, args.png.as_ref());
         if let Some(path) = &args.table {
             job = job.with(Role::Table, path);
         }
         if let Some(path) = &args.plot {
             job = job.with(Role::Plot, path);
         }
+        nothing_left_out(&job, "--table or --plot")?;
         let done = compare::compare(&scene, &args.methods, &job).map_err(|error| {
             Failure::of_run(&error, |name| match name {
                 "plot" => args.plot.is_some(),
@@ -311,6 +345,7 @@ impl Cli {
         }
         let mut job = self.job(scene).with(Role::Gif, &args.gif);
         if let Some(path) = &args.png {
+            let path = path.clone().unwrap_or(args.gif.with_extension("png"));
             job = job.with(Role::Png, path);
         }
         let result = sweep
@@ -355,6 +390,17 @@ impl Default for RunArgs {
             quiet: false,
             help: None,
         }
+    }
+}
+
+/// Refuses a job that would write nothing (`--no-gif --no-png` alone), naming `others`, the
+/// outputs that could be asked for instead.
+fn nothing_left_out(job: &Job, others: &str) -> Result<(), Failure> {
+    match job.outputs.is_empty() {
+        true => Err(Failure::input(format!(
+            "--no-gif and --no-png leave nothing to write; ask for {others}, or drop one of them"
+        ))),
+        false => Ok(()),
     }
 }
 

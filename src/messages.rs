@@ -14,18 +14,21 @@ pub fn flag(key: &str) -> String {
     format!("--{}", name.replace('_', "-"))
 }
 
-/// What a run wrote, in one line: every file with its size, the GIF's frames, the time.
+/// What a run wrote, in one line: every file with its size, how many frames the GIF holds
+/// (`300 frames, shown as 108 pictures` where repeated frames were merged), the time.
 pub fn summary_line(summary: &Summary) -> String {
+    let frames = summary
+        .pictures
+        .map(|pictures| match pictures == summary.frames {
+            true => format!("{} frames, ", summary.frames),
+            false => format!("{} frames, shown as {pictures} pictures, ", summary.frames),
+        });
     let files: Vec<String> = summary
         .files
         .iter()
         .enumerate()
-        .map(|(k, (path, bytes))| match k {
-            0 => format!(
-                "{} ({} frames, {bytes} bytes)",
-                path.display(),
-                summary.frames
-            ),
+        .map(|(k, (path, bytes))| match (k, &frames) {
+            (0, Some(frames)) => format!("{} ({frames}{bytes} bytes)", path.display()),
             _ => format!("{} ({bytes} bytes)", path.display()),
         })
         .collect();

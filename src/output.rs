@@ -277,6 +277,8 @@ pub struct AtomicFile {
     target: PathBuf,
     /// The path as given, for messages.
     path: PathBuf,
+    /// The permissions of the file it replaces, if it replaces one.
+    mode: Option<fs::Permissions>,
 }
 
 impl AtomicFile {
@@ -297,16 +299,28 @@ impl AtomicFile {
             );
             return Err(OutputError::at(path)(missing));
         }
+        // A file being replaced keeps its mode; one its owner may not write is left alone.
+        let mode = match fs::metadata(&target) {
+            Ok(meta) if read_only(&meta) => {
+                let why = "it is read-only (make it writable to replace it, or give another name)";
+                let denied = io::Error::new(io::ErrorKind::PermissionDenied, why);
+                return Err(OutputError::at(path)(denied));
+            }
+            Ok(meta) => Some(meta.permissions()),
+            Err(_) => None,
+        };
         let name = target.file_name().unwrap_or_default().to_string_lossy();
         let temp = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
             .suffix(".tmp")
             .tempfile_in(folder)
-            .map_err(OutputError::at(path))?;
+            // The error names the hidden temporary file; the user knows only their path.
+            .map_err(|error| OutputError::at(path)(io::Error::from(error.kind())))?;
         Ok(AtomicFile {
             temp,
             target,
             path: path.to_path_buf(),
+            mode,
         })
     }
 
@@ -325,7 +339,10 @@ impl AtomicFile {
         let at = || OutputError::at(&self.path);
         let file = self.temp.as_file();
         file.sync_all().map_err(at())?;
-        readable_by_all(file).map_err(at())?;
+        match &self.mode {
+            Some(mode) => file.set_permissions(mode.clone()).map_err(at())?,
+            None => readable_by_all(file).map_err(at())?,
+        }
         Ok(file.metadata().map_err(at())?.len())
     }
 
@@ -338,7 +355,22 @@ impl AtomicFile {
     }
 }
 
-/// Temporary files are private (0600 on Unix); outputs should read like any file we write.
+/// Whether the owner may not write this file: the write bit clear on Unix (root too, who
+/// could write it anyway, is refused: the file says it should not change), the read-only
+/// attribute on Windows.
+#[cfg(unix)]
+fn read_only(meta: &fs::Metadata) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    meta.permissions().mode() & 0o200 == 0
+}
+
+#[cfg(not(unix))]
+fn read_only(meta: &fs::Metadata) -> bool {
+    meta.permissions().readonly()
+}
+
+/// Temporary files are private (0600 on Unix); a new output should read like any file we
+/// write.
 #[cfg(unix)]
 fn readable_by_all(file: &File) -> io::Result<()> {
     use std::os::unix::fs::PermissionsExt;

@@ -417,3 +417,143 @@ fn the_time_budget_takes_fractions_of_a_second_and_says_what_it_allows() {
         );
     }
 }
+
+#[test]
+fn the_still_takes_the_gifs_name_for_the_main_command_compare_and_a_sweep_asked_for_one() {
+    let dir = temp_dir();
+    for (args, written) in [
+        (&["-o", "x.gif", "-n", "5"][..], ["x.gif", "x.png"]),
+        (&["compare", "-o", "c.gif", "-n", "5"], ["c.gif", "c.png"]),
+        (
+            &["sweep", "damping=1,0.5", "-o", "s.gif", "--png", "-n", "5"],
+            ["s.gif", "s.png"],
+        ),
+    ] {
+        let output = run_in(dir.path(), args);
+        assert!(output.status.success(), "{args:?}: {}", stderr(&output));
+        for name in written {
+            assert!(
+                dir.path().join(name).is_file(),
+                "{args:?} should write {name}"
+            );
+        }
+    }
+    assert!(
+        !dir.path().join("bouncing_ball.png").exists() && !dir.path().join("compare.png").exists(),
+        "no still under the default name when the GIF has another"
+    );
+}
+
+#[test]
+fn no_gif_and_no_png_leave_those_out_and_together_alone_are_refused() {
+    let dir = temp_dir();
+    let output = run_in(dir.path(), &["--no-gif", "--trace", "t.csv", "-n", "5"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let names = |dir: &Path| {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    };
+    assert_eq!(names(dir.path()), ["bouncing_ball.png", "t.csv"]);
+    let empty = temp_dir();
+    let refused = run_in(empty.path(), &["--no-gif", "--no-png"]);
+    let said = stderr(&refused);
+    assert_eq!(refused.status.code(), Some(2), "{said}");
+    assert!(
+        said.lines().count() == 1 && said.contains("nothing to write"),
+        "{said}"
+    );
+    assert!(names(empty.path()).is_empty(), "nothing written");
+}
+
+#[test]
+fn the_summary_counts_the_frames_the_gif_holds_once_repeats_are_merged() {
+    let dir = temp_dir();
+    let output = run_in(dir.path(), &["-p", "pile"]);
+    let said = String::from_utf8_lossy(&output.stdout);
+    let gif = decode_gif(&dir.path().join("bouncing_ball.gif"));
+    let expected = format!("300 frames, shown as {} pictures", gif.frames.len());
+    assert!(gif.frames.len() < 300, "the resting pile merges frames");
+    assert!(
+        said.contains(&expected),
+        "expected {expected:?} in {said:?}"
+    );
+}
+
+#[test]
+fn a_read_only_output_is_refused_and_left_as_it_was() {
+    let dir = temp_dir();
+    let png = dir.path().join("bouncing_ball.png");
+    std::fs::write(&png, b"an older still").unwrap();
+    let mut permissions = std::fs::metadata(&png).unwrap().permissions();
+    permissions.set_readonly(true);
+    std::fs::set_permissions(&png, permissions).unwrap();
+    let output = run_in(dir.path(), &["-n", "5"]);
+    let said = stderr(&output);
+    assert_eq!(output.status.code(), Some(1), "{said}");
+    assert!(
+        said.lines().count() == 1
+            && said.contains("cannot write bouncing_ball.png: it is read-only"),
+        "{said}"
+    );
+    assert_eq!(std::fs::read(&png).unwrap(), b"an older still");
+    assert!(
+        !dir.path().join("bouncing_ball.gif").exists(),
+        "nothing written"
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn a_replaced_output_keeps_its_mode() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = temp_dir();
+    assert!(run_in(dir.path(), &["-n", "5", "-q"]).status.success());
+    let gif = dir.path().join("bouncing_ball.gif");
+    std::fs::set_permissions(&gif, std::fs::Permissions::from_mode(0o600)).unwrap();
+    let output = run_in(dir.path(), &["-n", "6", "-q"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let mode = std::fs::metadata(&gif).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode, 0o600, "expected 0600, got {mode:o}");
+    let png = dir.path().join("bouncing_ball.png");
+    let mode = std::fs::metadata(&png).unwrap().permissions().mode() & 0o777;
+    assert_eq!(
+        mode, 0o644,
+        "a new file reads like any other: expected 0644, got {mode:o}"
+    );
+}
+
+/// A folder the user may not write into: the message names the user's own path, not the
+/// hidden temporary file. Root may write anywhere, so the run drops to `nobody` (setpriv).
+#[cfg(unix)]
+#[test]
+fn a_permission_error_names_the_users_path() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = temp_dir();
+    std::fs::set_permissions(dir.path(), std::fs::Permissions::from_mode(0o755)).unwrap();
+    let locked = dir.path().join("locked");
+    std::fs::create_dir(&locked).unwrap();
+    std::fs::set_permissions(&locked, std::fs::Permissions::from_mode(0o555)).unwrap();
+    let bin = env!("CARGO_BIN_EXE_bouncing_ball");
+    let mut command = if unsafe { libc::geteuid() } == 0 {
+        let mut setpriv = std::process::Command::new("setpriv");
+        setpriv.args(["--reuid=65534", "--regid=65534", "--clear-groups", bin]);
+        setpriv
+    } else {
+        std::process::Command::new(bin)
+    };
+    let output = command
+        .args(["-o", "locked/x.gif", "-n", "5"])
+        .current_dir(dir.path())
+        .output()
+        .expect("setpriv (util-linux) runs the binary as nobody");
+    let said = stderr(&output);
+    assert_eq!(output.status.code(), Some(1), "{said}");
+    assert!(
+        said.contains("cannot write locked/x.gif: permission denied") && !said.contains(".tmp"),
+        "{said}"
+    );
+}

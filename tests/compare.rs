@@ -127,9 +127,8 @@ fn moon_writes_the_gif_the_table_and_the_plot_with_the_lesson_far_behind_the_bes
     let gif = decode_gif(&dir.path().join("c.gif"));
     assert_eq!(gif.timeline(3).len(), 200, "the moon's 200 frames");
     assert!(gif.height > 240, "a legend strip under the 240 px canvas");
-    let png = image::open(dir.path().join("compare.png"))
-        .unwrap()
-        .to_rgb8();
+    // The still takes the GIF's name.
+    let png = image::open(dir.path().join("c.png")).unwrap().to_rgb8();
     assert!(
         png == *gif.frames.last().unwrap(),
         "the still is the last frame"

@@ -209,10 +209,7 @@ fn flag_and_value() -> BoxedStrategy<Vec<String>> {
 /// The files a successful run may have written: each output named (or the defaults), with
 /// a link replaced through to its target. Paths relative to `dir`.
 fn allowed_outputs(dir: &Path, list: &[String]) -> (BTreeSet<PathBuf>, Vec<(String, PathBuf)>) {
-    let mut named = vec![
-        ("--gif".to_string(), PathBuf::from("bouncing_ball.gif")),
-        ("--png".to_string(), PathBuf::from("bouncing_ball.png")),
-    ];
+    let mut named = vec![("--gif".to_string(), PathBuf::from("bouncing_ball.gif"))];
     // clap takes the last of a repeated flag.
     for pair in list.windows(2) {
         if let ("--gif" | "--png" | "--trace" | "-o", value) = (pair[0].as_str(), &pair[1]) {
@@ -224,6 +221,17 @@ fn allowed_outputs(dir: &Path, list: &[String]) -> (BTreeSet<PathBuf>, Vec<(Stri
             named.retain(|(f, _)| f != flag);
             named.push((flag.to_string(), PathBuf::from(value)));
         }
+    }
+    // Without --png, the still takes the GIF's name with .png.
+    if !named.iter().any(|(flag, _)| flag == "--png") {
+        let gif = named
+            .iter()
+            .find(|(flag, _)| flag == "--gif")
+            .map(|(_, path)| path);
+        let still = gif.map_or(PathBuf::from("bouncing_ball.png"), |gif| {
+            gif.with_extension("png")
+        });
+        named.push(("--png".to_string(), still));
     }
     let real_dir = dir.canonicalize().unwrap();
     let mut allowed = BTreeSet::new();

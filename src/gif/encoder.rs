@@ -61,6 +61,9 @@ pub struct GifWriter<W: Write> {
     spare: Option<Batch>,
     /// Whether a batch is with the encoding thread now.
     in_flight: bool,
+    /// Frames the GIF holds so far: a frame that only repeats the last one lengthens its
+    /// time instead of adding one.
+    pictures: u32,
     /// How many coders encode a batch at once (one per core).
     cores: usize,
     to_encoder: SyncSender<Batch>,
@@ -212,6 +215,7 @@ impl<W: Write> GifWriter<W> {
             filling: batch(coders),
             spare: Some(batch(Vec::new())),
             in_flight: false,
+            pictures: 0,
             cores,
             to_encoder,
             from_encoder,
@@ -274,6 +278,7 @@ impl<W: Write> GifWriter<W> {
         }
         crop(frame, slot.rect, &mut slot.pixels);
         self.filling.queued += 1;
+        self.pictures += 1;
         self.timings.changes += started.elapsed();
         // A batch goes as soon as it is full, or as soon as the encoder is free and there is
         // a frame for each core: no core waits for a batch to fill.
@@ -391,6 +396,11 @@ impl<W: Write> GifWriter<W> {
     pub fn flush(&mut self) -> io::Result<()> {
         self.send_queued()?;
         self.collect()
+    }
+
+    /// How many frames the GIF holds so far (repeats are merged into the frame before them).
+    pub fn pictures(&self) -> u32 {
+        self.pictures
     }
 
     /// Where the time went so far.

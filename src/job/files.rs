@@ -2,6 +2,7 @@
 //! output, for a stream given as `-`), and renamed into place together only once every one
 //! is whole ([`crate::output`] does the renaming).
 
+use std::cell::Cell;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -20,6 +21,8 @@ pub type Writer = BufWriter<Box<dyn Write>>;
 /// Every output of a job, open from before the first frame until they go into place.
 pub struct Files {
     open: Vec<Open>,
+    /// How many frames the finished GIF holds, once it is finished.
+    pictures: Cell<Option<u32>>,
 }
 
 /// One open output.
@@ -46,6 +49,7 @@ impl Files {
         });
         Ok(Files {
             open: open.collect::<Result<_, OutputError>>()?,
+            pictures: Cell::new(None),
         })
     }
 
@@ -112,12 +116,18 @@ impl Files {
                 .map_err(self.error_at(Role::Png))?;
         }
         if let Some(writer) = gif.writer {
+            self.pictures.set(Some(writer.pictures()));
             writer
                 .finish()
                 .and_then(|mut out| out.flush())
                 .map_err(&gif_error)?;
         }
         Ok(())
+    }
+
+    /// How many frames the GIF holds, once [`Files::finish_pictures`] has ended it.
+    pub(super) fn pictures(&self) -> Option<u32> {
+        self.pictures.get()
     }
 
     /// Puts every file in place; returns each file written and its size, in order (an

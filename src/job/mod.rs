@@ -53,6 +53,9 @@ pub struct Job {
 #[derive(Clone, Debug)]
 pub struct Summary {
     pub frames: u32,
+    /// How many frames the GIF holds (it merges a frame that repeats the last into it), if
+    /// the job wrote one; then the GIF is the first of `files`.
+    pub pictures: Option<u32>,
     /// Every file written and its size in bytes, in the order of [`Job::outputs`] (a trace
     /// sent to standard output is not a file).
     pub files: Vec<(PathBuf, u64)>,
@@ -158,10 +161,12 @@ impl Job {
     pub fn commit(&self, files: Files, frames: u32) -> Result<Summary, RunError> {
         // The last moment a signal stops the job; from here on the files go into place.
         self.stop_if_asked(frames, frames)?;
+        let pictures = files.pictures();
         let files = files.commit()?;
         self.progress.clear();
         Ok(Summary {
             frames,
+            pictures,
             files,
             elapsed: self.started.elapsed(),
         })
