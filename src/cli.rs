@@ -6,7 +6,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use clap::error::ErrorKind;
+use clap::error::{ContextKind, ContextValue, ErrorKind};
 use clap::parser::ValueSource;
 use clap::{ArgAction, ArgMatches, CommandFactory, FromArgMatches, Id, Parser, Subcommand};
 use clap_complete::Shell;
@@ -30,7 +30,6 @@ use crate::{compare, output};
     long_about = None,
     allow_negative_numbers = true,
     disable_help_flag = true,
-    disable_help_subcommand = true,
     after_help = "Without --scene or --preset it runs the lesson's scene (the constants in \
                   src/main.rs). Flags you type override the scene's values; ball flags apply \
                   to every ball."
@@ -92,9 +91,9 @@ struct SceneArgs {
     /// Load a bundled scene
     #[arg(short, long, value_parser = preset_names())]
     preset: Option<String>,
-    /// Seed for everything random (same seed, same bytes out)
-    #[arg(long, default_value_t = 1, value_parser = whole_number, allow_hyphen_values = true)]
-    seed: u64,
+    /// Seed for everything random (same seed, same bytes out) [default: 1]
+    #[arg(long, value_parser = whole_number, allow_hyphen_values = true)]
+    seed: Option<u64>,
     // --width to --frame-ms: the scene settings, a row each in src/scene/overrides.rs.
     #[command(flatten)]
     settings: Overrides,
@@ -208,6 +207,7 @@ impl Cli {
             line: format!("error: cannot watch for Ctrl-C: {error}"),
             code: 1,
         })?;
+        single_dash_long_flag(&lesson)?;
         let parsed = command(&lesson).try_get_matches().and_then(|matches| {
             refuse_main_flags_before_a_subcommand(&matches)?;
             Args::from_arg_matches(&matches)
@@ -222,7 +222,7 @@ impl Cli {
                     stop,
                 })
             }
-            Err(error) => return Err(refuse(error)),
+            Err(error) => return Err(refused(error, &lesson)),
         };
         let run = std::mem::take(&mut args.run);
         let command = match args.command.take() {
@@ -337,6 +337,7 @@ impl Cli {
         let scene = &args.scene;
         let typed = |name: &str| match name {
             "preset" => scene.preset.is_some() || scene.scene.is_some(),
+            "seed" => scene.seed.is_some(),
             setting => scene.settings.is_typed(setting),
         };
         let sweep = Sweep::parse(&args.values).map_err(Failure::input)?;
@@ -352,7 +353,7 @@ impl Cli {
             .panels(typed, |change| scene.changed(change, &self.lesson))
             .and_then(|panels| sweep::run(&panels, &job));
         let summary = result.map_err(|error| match error {
-            SweepError::Flag(error) => refuse(error),
+            SweepError::Flag(error) => refuse(error, Some("sweep")),
             SweepError::Run(error) => {
                 Failure::of_run(&error, |name| name == sweep.setting() || typed(name))
             }
@@ -391,6 +392,55 @@ impl Default for RunArgs {
             help: None,
         }
     }
+}
+
+/// clap's error in one line, with a hint where the mistake is a common one: a sweep's values
+/// separated by spaces (`damping=0.5 1.0`).
+fn refused(error: clap::Error, lesson: &Scene) -> Failure {
+    let subcommand = typed_subcommand(lesson);
+    let unexpected = match error.get(ContextKind::InvalidArg) {
+        Some(ContextValue::String(word)) => word.clone(),
+        _ => String::new(),
+    };
+    let failure = refuse(error, subcommand.as_deref());
+    let stray_value = !unexpected.is_empty() && !unexpected.starts_with('-');
+    match subcommand.as_deref() {
+        Some("sweep") if stray_value => failure.hinted(&format!(
+            "a sweep's values are one word, separated by commas without spaces (KEY=V1,V2), so {unexpected} is no value of it"
+        )),
+        _ => failure,
+    }
+}
+
+/// Refuses a long flag typed with one dash (`-damping 0.5`), which clap would read as the
+/// short `-d` with the value `amping`.
+fn single_dash_long_flag(lesson: &Scene) -> Result<(), Failure> {
+    let command = command(lesson);
+    let long_flags: Vec<&str> = std::iter::once(&command)
+        .chain(command.get_subcommands())
+        .flat_map(|c| c.get_arguments().filter_map(|arg| arg.get_long()))
+        .collect();
+    for word in std::env::args().skip(1) {
+        let Some(name) = word.strip_prefix('-').filter(|name| !name.starts_with('-')) else {
+            continue;
+        };
+        let name = name.split('=').next().unwrap_or(name);
+        if name.len() > 1 && long_flags.contains(&name) {
+            return Err(Failure::input(format!(
+                "{word}: a long flag takes two dashes: --{name}; see --help"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The subcommand typed on the command line, if any: the first word that names one.
+fn typed_subcommand(lesson: &Scene) -> Option<String> {
+    let command = command(lesson);
+    let names: Vec<&str> = command.get_subcommands().map(|c| c.get_name()).collect();
+    std::env::args()
+        .skip(1)
+        .find(|word| names.contains(&word.as_str()))
 }
 
 /// Refuses a job that would write nothing (`--no-gif --no-png` alone), naming `others`, the
@@ -447,12 +497,17 @@ impl SceneArgs {
             height: self.settings.height,
         };
         let mut scene = match (&self.scene, &self.preset) {
-            (Some(path), _) => scene::file::load_on(path, self.seed, canvas)?,
-            (None, Some(name)) => scene::file::preset_on(name, self.seed, canvas)?,
+            (Some(path), _) => scene::file::load_on(path, self.seed(), canvas)?,
+            (None, Some(name)) => scene::file::preset_on(name, self.seed(), canvas)?,
             (None, None) => lesson.clone(),
         };
         self.settings.apply(&mut scene);
         Ok(scene)
+    }
+
+    /// The seed of everything random: as typed, or 1.
+    fn seed(&self) -> u64 {
+        self.seed.unwrap_or(1)
     }
 
     /// The scene with a sweep's change laid over it, as if it had been typed too.
@@ -466,6 +521,10 @@ impl SceneArgs {
                 settings: setting.or(&self.settings),
                 ..self.clone()
             },
+            Change::Seed(seed) => SceneArgs {
+                seed: Some(*seed),
+                ..self.clone()
+            },
         };
         args.scene(lesson)
     }
@@ -474,7 +533,15 @@ impl SceneArgs {
 /// The command line, its scene settings showing `lesson`'s values as their defaults.
 fn command(lesson: &Scene) -> clap::Command {
     let defaults = |command| Overrides::defaults_from(lesson, command);
+    // Each of compare's methods sets these: they are refused there, so its help leaves them out.
+    let per_method = |command: clap::Command| {
+        ["integrator", "substeps", "collisions"]
+            .into_iter()
+            .fold(command, |command, id| {
+                command.mut_arg(id, |arg| arg.hide(true))
+            })
+    };
     defaults(Args::command())
         .mut_subcommand("sweep", defaults)
-        .mut_subcommand("compare", defaults)
+        .mut_subcommand("compare", |command| per_method(defaults(command)))
 }

@@ -21,6 +21,7 @@ pub fn summary_line(summary: &Summary) -> String {
         .pictures
         .map(|pictures| match pictures == summary.frames {
             true => format!("{} frames, ", summary.frames),
+            false if pictures == 1 => format!("{} frames, shown as 1 picture, ", summary.frames),
             false => format!("{} frames, shown as {pictures} pictures, ", summary.frames),
         });
     let files: Vec<String> = summary
@@ -68,6 +69,15 @@ impl Failure {
         }
     }
 
+    /// The failure with `hint` added to its line, before where it says which help to read.
+    pub fn hinted(self, hint: &str) -> Failure {
+        let line = match self.line.rsplit_once("; see ") {
+            Some((what, help)) => format!("{what}; {hint}; see {help}"),
+            None => format!("{}; {hint}", self.line),
+        };
+        Failure { line, ..self }
+    }
+
     /// Input the program cannot use (exit 2).
     pub fn input(why: impl std::fmt::Display) -> Failure {
         Failure {
@@ -78,10 +88,11 @@ impl Failure {
 }
 
 /// A command-line error in one line (clap spreads it over several): what was wrong, what is
-/// allowed and, for a near miss, the nearest name. (Help and the version are no error: the
+/// allowed, for a near miss the nearest name, and the help to read (`subcommand`'s, if the
+/// mistake is in one). (Help and the version are no error: the
 /// command line prints them as clap does.)
-pub fn refuse(error: clap::Error) -> Failure {
-    use clap::error::{ContextKind, ContextValue};
+pub fn refuse(error: clap::Error, subcommand: Option<&str>) -> Failure {
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
     let text = |kind| match error.get(kind) {
         Some(ContextValue::String(text)) => Some(text.clone()),
         Some(ContextValue::Strings(texts)) if !texts.is_empty() => Some(texts.join(" or ")),
@@ -98,10 +109,20 @@ pub fn refuse(error: clap::Error) -> Failure {
                 "<SHELL>" => "completions",
                 flag => flag,
             };
-            match std::error::Error::source(&error) {
-                Some(why) => format!("error: {flag} {value} is not allowed: {why}"),
-                None => format!("error: {flag} {value} is not allowed"),
-            }
+            let why =
+                std::error::Error::source(&error).map_or(String::new(), |why| format!(": {why}"));
+            format!(
+                "error: {flag} {value} is not allowed{why}{}",
+                decimal_comma(&value)
+            )
+        }
+        // clap lists what is missing on the lines below its first.
+        (Some(missing), None) if error.kind() == ErrorKind::MissingRequiredArgument => {
+            let missing = match error.get(ContextKind::InvalidArg) {
+                Some(ContextValue::Strings(all)) => all.join(", "),
+                _ => missing,
+            };
+            format!("error: missing {missing}")
         }
         _ => error
             .to_string()
@@ -116,14 +137,31 @@ pub fn refuse(error: clap::Error) -> Failure {
             line += &format!("; allowed: {}", allowed.join(", "));
         }
     }
-    for kind in [ContextKind::SuggestedValue, ContextKind::SuggestedArg] {
+    for kind in [
+        ContextKind::SuggestedValue,
+        ContextKind::SuggestedArg,
+        ContextKind::SuggestedSubcommand,
+    ] {
         if let Some(near) = text(kind) {
             line += &format!("; did you mean {near}?");
         }
     }
+    // The help to read is the subcommand's, when the mistake is in one.
+    let help = subcommand.map_or("--help".to_string(), |name| {
+        format!("bouncing_ball {name} --help")
+    });
     Failure {
-        line: format!("{line}; see --help"),
+        line: format!("{line}; see {help}"),
         code: 2,
+    }
+}
+
+/// A hint for a number written with a decimal comma (`0,5`), which a flag reads as no number.
+fn decimal_comma(value: &str) -> String {
+    let pointed = value.replace(',', ".");
+    match value.contains(',') && pointed.parse::<f64>().is_ok() {
+        true => format!(" (decimals take a point: {pointed})"),
+        false => String::new(),
     }
 }
 

@@ -322,7 +322,34 @@ fn a_flag_error_says_what_is_allowed_and_the_nearest_name_in_one_line() {
         (&["--trail", "-1"], &["--trail -1", "from 0 to 1000"]),
         (&["--seed", "-1"], &["--seed -1", "whole number from 0"]),
         (&["--x", "-inf"], &["--x -inf", "finite"]),
-        (&["--vy", "-nan"], &["--vy NaN", "finite"]),
+        // Echoed as typed, not as the number it would have become.
+        (&["--vy", "-nan"], &["--vy -nan", "finite"]),
+        (&["--vx", "1e400"], &["--vx 1e400", "finite"]),
+        (
+            &["--damping", "0,5"],
+            &["--damping 0,5", "decimals take a point: 0.5"],
+        ),
+        (&["-damping", "0.5"], &["-damping", "two dashes: --damping"]),
+        (&["swep", "damping=1"], &["'swep'", "did you mean sweep?"]),
+        (
+            &["sweep", "damping=0.5", "1.0"],
+            &[
+                "separated by commas without spaces",
+                "see bouncing_ball sweep --help",
+            ],
+        ),
+        (
+            &["sweep"],
+            &["missing <KEY=V1,V2,...>", "bouncing_ball sweep --help"],
+        ),
+        (
+            &["completions"],
+            &["missing <SHELL>", "bouncing_ball completions --help"],
+        ),
+        (
+            &["--time-budget", "0,5"],
+            &["--time-budget 0,5", "from 0 up"],
+        ),
         (
             &["--radius", "60", "--width", "1920", "--height", "1080"],
             &[
@@ -555,5 +582,68 @@ fn a_permission_error_names_the_users_path() {
     assert!(
         said.contains("cannot write locked/x.gif: permission denied") && !said.contains(".tmp"),
         "{said}"
+    );
+}
+
+#[test]
+fn help_is_there_for_every_subcommand_as_a_flag_and_as_help_name() {
+    let dir = temp_dir();
+    for args in [
+        &["completions", "--help"][..],
+        &["completions", "-h"],
+        &["help", "compare"],
+        &["help", "sweep"],
+        &["compare", "-h"],
+    ] {
+        let output = run_in(dir.path(), args);
+        let said = String::from_utf8_lossy(&output.stdout);
+        assert!(output.status.success(), "{args:?}: {}", stderr(&output));
+        assert!(said.contains("Usage: bouncing_ball"), "{args:?}: {said}");
+    }
+    let compare = run_in(dir.path(), &["compare", "--help"]);
+    let said = String::from_utf8_lossy(&compare.stdout);
+    for hidden in ["--integrator <", "--substeps <", "--collisions <"] {
+        assert!(
+            !said.contains(hidden),
+            "compare sets {hidden} per method: {said}"
+        );
+    }
+}
+
+#[test]
+fn a_scene_file_key_gets_the_nearest_name_and_a_whole_number_its_real_range() {
+    let dir = temp_dir();
+    for (text, says) in [
+        (
+            "width = 320\nheight = 240\ngravty = [0.0, 0.5]\n[[balls]]\nx = 10.0\ny = 10.0\nradius = 3.0\n",
+            "unknown key `gravty`; did you mean `gravity`?",
+        ),
+        (
+            "width = 400.0\nheight = 240\n[[balls]]\nx = 10.0\ny = 10.0\nradius = 3.0\n",
+            "expected a whole number from 1 to 8192",
+        ),
+    ] {
+        std::fs::write(dir.path().join("s.toml"), text).unwrap();
+        let output = run_in(dir.path(), &["--scene", "s.toml"]);
+        let said = stderr(&output);
+        assert_eq!(output.status.code(), Some(2), "{said}");
+        assert!(said.lines().count() == 1 && said.contains(says), "{says}: {said}");
+    }
+}
+
+#[test]
+fn a_spawn_without_colours_takes_the_lessons() {
+    let dir = temp_dir();
+    let text = "width = 200\nheight = 120\nframes = 1\n[spawn]\ncount = 3\nradius = 6.0\nmax_speed = 0.0\ntrail = 0\n";
+    std::fs::write(dir.path().join("s.toml"), text).unwrap();
+    let output = run_in(dir.path(), &["--scene", "s.toml", "-q"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let png = image::open(dir.path().join("bouncing_ball.png"))
+        .unwrap()
+        .to_rgb8();
+    let lesson_ball = png.pixels().filter(|p| p.0 == [255, 200, 60]).count();
+    assert!(
+        lesson_ball > 3 * 90,
+        "three balls in the lesson's yellow: {lesson_ball} px"
     );
 }

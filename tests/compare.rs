@@ -425,28 +425,19 @@ fn the_readme_gif_is_what_its_command_draws() {
 }
 
 #[test]
-fn a_scene_without_balls_still_draws_its_legend() {
+fn a_scene_without_balls_is_refused_in_one_line() {
     let dir = temp_dir();
     std::fs::write(
         dir.path().join("empty.toml"),
         "width = 320\nheight = 240\nframes = 5\n",
     )
     .unwrap();
-    compare_ok(
-        dir.path(),
-        &["--scene", "empty.toml", "--table", "e.csv", "-q"],
+    let output = run_in(dir.path(), &["--scene", "empty.toml"]);
+    let said = text(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{said}");
+    assert!(
+        said.lines().count() == 1 && said.contains("empty.toml: the scene has no balls"),
+        "{said}"
     );
-    let rows = table(&dir.path().join("e.csv"));
-    assert_eq!(rows.len(), 3);
-    for row in &rows {
-        assert_eq!(
-            row.number("max_position_error_px"),
-            0.0,
-            "no ball, no error"
-        );
-        assert_eq!(row.get("energy_drift"), "", "no energy to drift from");
-    }
-    let gif = decode_gif(&dir.path().join("compare.gif"));
-    let yellow = count(&gif.frames[0], [255, 200, 60], 241..gif.height, gif.width);
-    assert!(yellow > 20, "the lesson's method named in its colour");
+    assert!(!dir.path().join("compare.gif").exists(), "nothing written");
 }

@@ -94,6 +94,28 @@ fn four_damping_values_make_one_gif_of_four_labelled_panels_each_the_plain_run()
 }
 
 #[test]
+fn a_seed_sweep_shows_each_seeds_run_in_its_panel() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = ["-p", "many", "-n", "5"];
+    succeeds(
+        dir.path(),
+        &[&["sweep", "seed=1,7", "-o", "s.gif"][..], &scene].concat(),
+    );
+    let tiled = frames(&dir.path().join("s.gif"));
+    let width = tiled[0].width();
+    for (i, seed) in ["1", "7"].into_iter().enumerate() {
+        let name = format!("plain-{seed}.gif");
+        succeeds(
+            dir.path(),
+            &[&["--seed", seed, "-o", &name, "-q"][..], &scene].concat(),
+        );
+        let plain = frames(&dir.path().join(name));
+        let at = origin(i as u32, width, plain[0].dimensions());
+        assert_panel_is_the_plain_run(&tiled, &plain, at);
+    }
+}
+
+#[test]
 fn a_preset_sweep_tiles_the_lessons_exercises_and_writes_the_same_bytes_twice() {
     let dir = tempfile::tempdir().unwrap();
     let sweep = "preset=elastic,no-gravity,heavy,moon";

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
+use super::overrides::Overrides;
 use super::random::Random;
 use super::spec::{BallSpec, InvalidValue, Rgb, Scene, TrailFade, MAX_BALLS};
 use crate::physics::floor::Floor;
@@ -53,6 +54,8 @@ pub enum SceneFileError {
     Invalid { file: String, invalid: InvalidValue },
     #[error("no preset named {name:?}; the presets are: {}", preset_names().join(", "))]
     UnknownPreset { name: String },
+    #[error("{file}: the scene has no balls: add a [[balls]] table, or a [spawn] table with a count of 1 or more")]
+    NoBalls { file: String },
 }
 
 /// The names of the bundled presets.
@@ -168,6 +171,12 @@ fn parse_on(file: &str, text: &str, seed: u64, canvas: Canvas) -> Result<Scene, 
     };
     let scene = raw.on(canvas).into_scene(seed).map_err(invalid)?;
     scene.validate().map_err(invalid)?;
+    // An empty animation is never what a scene file meant.
+    if scene.balls.is_empty() {
+        return Err(SceneFileError::NoBalls {
+            file: file.to_string(),
+        });
+    }
     Ok(scene)
 }
 
@@ -186,10 +195,16 @@ fn plain_message(message: &str, key: &str, at: &str, line_text: &str) -> String 
     if let Some(rest) = message.strip_prefix("unknown field") {
         let allowed = rest.split_once("expected ").map_or("", |(_, a)| a);
         let allowed = allowed.trim_start_matches("one of ");
-        return format!(
-            "unknown key `{}`; the keys allowed here are {allowed}",
-            quoted(rest)
-        );
+        let unknown = quoted(rest);
+        // The nearest allowed key by the similarity clap's suggestions use (`gravty`).
+        let near = allowed
+            .split(", ")
+            .map(|key| key.trim_matches('`'))
+            .map(|key| (strsim::jaro(&unknown, key), key))
+            .filter(|(likeness, _)| *likeness > 0.7)
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+            .map_or(String::new(), |(_, key)| format!("; did you mean `{key}`?"));
+        return format!("unknown key `{unknown}`{near}; the keys allowed here are {allowed}");
     }
     if message.starts_with("unclosed array table") || message.starts_with("unclosed table") {
         let name: String = line_text
@@ -208,13 +223,20 @@ fn plain_message(message: &str, key: &str, at: &str, line_text: &str) -> String 
     if message.starts_with("duplicate key") && !at.is_empty() && !at.contains('\n') {
         return format!("duplicate key `{}`", at.trim());
     }
+    // A whole number's real range, where it is a setting with one (`width`: 1 to 8192).
+    let setting = key.rsplit('.').next().unwrap_or(key);
+    let whole = match Overrides::whole_range(setting) {
+        Some(range) => format!(
+            "expected a whole number from {} to {}",
+            range.start(),
+            range.end()
+        ),
+        None => "expected a whole number".to_string(),
+    };
     let plain = message
         .replace("expected u8", "expected a whole number from 0 to 255")
-        .replace(
-            "expected u32",
-            "expected a whole number from 0 to 4294967295",
-        )
-        .replace("expected usize", "expected a whole number")
+        .replace("expected u32", &whole)
+        .replace("expected usize", &whole)
         .replace("expected f64", "expected a number");
     match key {
         "" | "." => plain,
@@ -308,6 +330,13 @@ fn default_ball_colour() -> Rgb {
 fn default_trail_colour() -> Rgb {
     TRAIL_COLOUR
 }
+/// A `[spawn]` without colours takes the lesson's.
+fn default_colours() -> Vec<Rgb> {
+    vec![BALL_COLOUR]
+}
+fn default_trail_colours() -> Vec<Rgb> {
+    vec![TRAIL_COLOUR]
+}
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -363,7 +392,9 @@ pub struct Spawn {
     max_speed: f64,
     #[serde(default = "default_trail")]
     trail: usize,
+    #[serde(default = "default_colours")]
     colours: Vec<Rgb>,
+    #[serde(default = "default_trail_colours")]
     trail_colours: Vec<Rgb>,
 }
 

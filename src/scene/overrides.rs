@@ -10,7 +10,7 @@ use std::ops::RangeInclusive;
 
 use clap::builder::ValueParser;
 use clap::parser::ValueSource;
-use clap::{Arg, ArgAction, ArgMatches, Command};
+use clap::{Arg, ArgAction, ArgMatches, Command, ValueHint};
 
 use super::spec::{
     Scene, TrailFade, MAX_CANVAS_SIDE, MAX_FRAME_MS, MAX_ITERATIONS, MAX_SUBSTEPS, MAX_TRAIL_LEN,
@@ -85,6 +85,33 @@ where
     }
 }
 
+/// How a setting's flag reads its value.
+trait FlagValue {
+    fn parser() -> ValueParser;
+}
+
+/// A number must be finite, and is refused as typed (`--vx 1e400`, not `inf`).
+impl FlagValue for f64 {
+    fn parser() -> ValueParser {
+        ValueParser::new(|text: &str| match text.trim().parse::<f64>() {
+            Ok(value) if value.is_finite() => Ok(value),
+            _ => Err("must be a finite number, e.g. 0.5 or -3".to_string()),
+        })
+    }
+}
+
+/// Names and switches read as clap reads them.
+macro_rules! read_by_clap {
+    ($($ty:ty),*) => {$(
+        impl FlagValue for $ty {
+            fn parser() -> ValueParser {
+                clap::value_parser!($ty).into()
+            }
+        }
+    )*};
+}
+read_by_clap!(bool, Integrator, CollisionMode, TrailFade);
+
 /// The flag of setting `id` (`frame_ms` → `--frame-ms <FRAME_MS>`), as clap's derive makes it.
 fn flag(id: &'static str, short: Option<char>, help: &str, parser: ValueParser) -> Arg {
     Arg::new(id)
@@ -93,6 +120,8 @@ fn flag(id: &'static str, short: Option<char>, help: &str, parser: ValueParser) 
         .value_name(id.to_uppercase())
         .help(help.trim().to_string())
         .value_parser(parser)
+        // No setting is a path: a shell completes no file names for it.
+        .value_hint(ValueHint::Other)
         // A value may start with a minus sign, `-inf` and `-nan` too (clap's own test for a
         // negative number knows only digits): it then gets the number's own message.
         .allow_hyphen_values(true)
@@ -143,6 +172,14 @@ macro_rules! settings {
             /// typed flags).
             pub fn or(&self, other: &Overrides) -> Overrides {
                 Overrides {$($name: self.$name.or(other.$name),)*}
+            }
+
+            /// The whole numbers the setting `name` (`width`) allows, if it is a whole number.
+            pub fn whole_range(name: &str) -> Option<RangeInclusive<i64>> {
+                match name {
+                    $(stringify!($name) => settings!(@range $($range)?),)*
+                    _ => None,
+                }
             }
 
             /// Whether the setting `name` (`frame_ms`) was typed.
@@ -202,12 +239,15 @@ macro_rules! settings {
         }
     };
 
+    (@range) => { None };
+    (@range $range:expr) => { Some($range) };
+
     (@short) => { None };
     (@short $short:literal) => { Some($short) };
 
     // A whole number is read as any integer and held to its real range, so `--width -320`
     // says `-320 is not in 1..=8192`, not that a minus sign is an invalid digit.
-    (@parser $ty:ty) => { clap::value_parser!($ty).into() };
+    (@parser $ty:ty) => { <$ty as FlagValue>::parser() };
     (@parser $ty:ty, $range:expr) => { ValueParser::new(whole_number_in::<$ty>($range)) };
 
     (@put $scene:ident, scene ($($field:ident).+) [] $value:ident) => {

@@ -5,10 +5,13 @@ use clap::error::{ContextKind, ContextValue};
 use clap::{Arg, Args, Command, FromArgMatches};
 
 use super::error::SweepError;
+use crate::messages::whole_number;
 use crate::scene::{preset_names, Overrides, Scene, SceneFileError};
 
 /// The key that picks a preset rather than a setting.
 const PRESET: &str = "preset";
+/// The key that picks the seed of everything random (`many`'s balls, for one).
+const SEED: &str = "seed";
 /// Settings one GIF cannot vary: every panel shows its frames at the same pace.
 const FIXED: [&str; 1] = ["frame-ms"];
 
@@ -31,6 +34,8 @@ pub struct Sweep {
 pub enum Change {
     /// `--preset NAME`.
     Preset(String),
+    /// `--seed N`.
+    Seed(u64),
     /// One setting's flag; every other setting is `None`.
     Setting(Box<Overrides>),
 }
@@ -41,7 +46,9 @@ fn flags() -> Command {
         .no_binary_name(true)
         .disable_help_flag(true)
         .disable_version_flag(true);
-    Overrides::augment_args(command).arg(Arg::new(PRESET).long(PRESET).value_parser(preset_names()))
+    Overrides::augment_args(command)
+        .arg(Arg::new(SEED).long(SEED).value_parser(whole_number))
+        .arg(Arg::new(PRESET).long(PRESET).value_parser(preset_names()))
 }
 
 /// Every key a sweep can vary, as the flags spell them: `preset` and the settings.
@@ -106,8 +113,10 @@ impl Sweep {
                 let matches = flags()
                     .try_get_matches_from([flag.as_str(), value.as_str()])
                     .map_err(SweepError::Flag)?;
-                if self.key == PRESET {
-                    return Ok(Change::Preset(value.clone()));
+                match self.key.as_str() {
+                    PRESET => return Ok(Change::Preset(value.clone())),
+                    SEED => return Ok(Change::Seed(matches.get_one(SEED).copied().unwrap_or(1))),
+                    _ => {}
                 }
                 let setting = Overrides::from_arg_matches(&matches).map_err(SweepError::Flag)?;
                 Ok(Change::Setting(Box::new(setting)))
