@@ -181,7 +181,7 @@ mod tests {
             .iter()
             .map(|c| match c {
                 Change::Setting(o) => o.damping,
-                Change::Preset(_) => None,
+                Change::Preset(_) | Change::Seed(_) => None,
             })
             .collect();
         assert_eq!(damping, [Some(0.5), Some(0.88), Some(1.0)]);
