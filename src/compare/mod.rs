@@ -38,7 +38,7 @@ use crate::stop::Stop;
 
 use checks::{balls_and_frames, check_finite, stop_if_asked};
 use draw::{LegendRow, Picture};
-use measure::{Energy, Outcome, Stray};
+use measure::{Energy, Outcome, Role, Standing, Stray, Trust};
 use methods::Method;
 use reference::Reference;
 
@@ -128,28 +128,37 @@ pub fn compare(scene: &Scene, outputs: &CompareOutputs) -> Result<Comparison, Ru
     let mut files = Files::create(outputs)?;
 
     let bare = without_trails(scene);
-    let reference = Reference::of(&bare, &outputs.stop)?;
+    let reference = Reference::of(&bare, &outputs.methods, &outputs.stop)?;
     let (strays, ends) = animate(scene, outputs, &reference, &mut files)?;
     let timings = measure::time_all(&bare, &outputs.methods);
-    let drifts = energy_drifts(scene, &reference, &ends);
+    let roles: Vec<Role> = outputs.methods.iter().map(|&m| reference.role(m)).collect();
+    let drifts = energy_drifts(scene, &reference, &ends, &roles);
+    let (chaotic, trust) = (chaotic(scene), reference.trust(scene.frames));
     let outcomes: Vec<Outcome> = (0..outputs.methods.len())
         .map(|k| Outcome {
             method: outputs.methods[k],
             timing: timings[k],
+            standing: Standing::of(roles[k], &strays[k], trust, chaotic, scene.frames),
             stray: strays[k].clone(),
             energy_drift: drifts[k],
         })
         .collect();
 
-    let chaotic = chaotic(scene);
     let conserves = measure::conserves_energy(scene);
-    let table = table::text(&reference.describe(), &outcomes, chaotic, conserves);
+    let table = table::text(
+        &reference.describe(),
+        &outcomes,
+        chaotic,
+        conserves,
+        trust,
+        scene.frames,
+    );
     let title = format!(
         "work against precision: {} · reference {}",
         balls_and_frames(scene),
         reference.method
     );
-    files.write_table_and_plot(&outcomes, chaotic, scene.frames, plot_format, &title)?;
+    files.write_table_and_plot(&outcomes, chaotic, trust, plot_format, &title)?;
     stop_if_asked(&outputs.stop, scene.frames, scene.frames)?;
     let sizes = files.commit()?;
     let paths = outputs.list().into_iter().map(|o| o.path.to_path_buf());
@@ -174,39 +183,27 @@ fn without_trails(scene: &Scene) -> Scene {
 }
 
 /// Each method's energy drift, given its balls in the last frame (`ends`): against the
-/// first frame's energy if the scene keeps its energy, else against the reference's.
-fn energy_drifts(scene: &Scene, reference: &Reference, ends: &[Vec<Ball>]) -> Vec<Option<f64>> {
+/// first frame's energy if the scene keeps its energy, else against the reference's, which
+/// needs a reference trusted to the last frame and says nothing of the reference's own method.
+fn energy_drifts(
+    scene: &Scene,
+    reference: &Reference,
+    ends: &[Vec<Ball>],
+    roles: &[Role],
+) -> Vec<Option<f64>> {
     let energy = Energy::new(scene);
     let start = energy.of(scene.simulation().balls());
-    let target = if measure::conserves_energy(scene) {
+    let conserves = measure::conserves_energy(scene);
+    let target = if conserves {
         start
     } else {
         energy.of(&reference.trajectory.last)
     };
+    let judged = |role| conserves || (role == Role::Method && reference.horizon >= scene.frames);
     let drift = |balls: &Vec<Ball>| (energy.of(balls) - target) / start.abs();
     ends.iter()
-        .map(|balls| Some(drift(balls)).filter(|d| d.is_finite()))
-        .collect()
-}
-
-/// What the legend says of a method so far.
-fn status(stray: &Stray, chaotic: bool) -> String {
-    match stray.parted_at {
-        Some(frame) if chaotic => format!("parted at frame {frame}"),
-        _ => format!("error {} px", table::short(stray.max_error)),
-    }
-}
-
-/// The longest texts a legend row of `method` can show, for the picture's width.
-fn widest_rows(methods: &[Method], frames: u32) -> Vec<String> {
-    let statuses = [
-        "error 8888.88 px".to_string(),
-        "error 8.8e-88 px".to_string(),
-        format!("parted at frame {frames}"),
-    ];
-    methods
-        .iter()
-        .flat_map(|m| statuses.iter().map(move |s| format!("{m}  {s}")))
+        .zip(roles)
+        .map(|(balls, &role)| Some(drift(balls)).filter(|d| d.is_finite() && judged(role)))
         .collect()
 }
 
@@ -220,9 +217,9 @@ fn animate(
     files: &mut Files,
 ) -> Result<(Vec<Stray>, Vec<Vec<Ball>>), RunError> {
     let methods = &outputs.methods;
-    let chaotic = chaotic(scene);
-    let reference_row = format!("reference {} (outlines)", reference.method);
-    let mut widest = widest_rows(methods, scene.frames);
+    let (chaotic, trust) = (chaotic(scene), reference.trust(scene.frames));
+    let reference_row = draw::reference_row(reference.method, trust, scene.frames);
+    let mut widest = draw::widest_rows(methods, trust, chaotic, scene.frames);
     widest.push(reference_row.clone());
     let mut picture = Picture::new(scene, methods.len(), reference_row, &widest)?;
     let (width, height) = picture.size();
@@ -237,7 +234,7 @@ fn animate(
     .map_err(&gif_error)?;
     let mut simulations: Vec<Simulation> =
         methods.iter().map(|m| m.on(scene).simulation()).collect();
-    let mut strays = vec![Stray::default(); methods.len()];
+    let mut strays = vec![Stray::until(reference.horizon); methods.len()];
     for n in 0..scene.frames {
         stop_if_asked(&outputs.stop, n, scene.frames)?;
         let centres = reference.trajectory.frame(n as usize);
@@ -249,9 +246,10 @@ fn animate(
         let legend: Vec<LegendRow> = methods
             .iter()
             .zip(&strays)
-            .map(|(method, stray)| LegendRow {
-                label: method.to_string(),
-                status: status(stray, chaotic),
+            .map(|(&method, stray)| {
+                let trust = reference.trust(n + 1);
+                let standing = Standing::of(reference.role(method), stray, trust, chaotic, n + 1);
+                LegendRow::new(method, standing)
             })
             .collect();
         let balls: Vec<&[Ball]> = simulations.iter().map(Simulation::balls).collect();
@@ -295,16 +293,17 @@ impl Files {
         &mut self,
         outcomes: &[Outcome],
         chaotic: bool,
-        frames: u32,
+        trust: Trust,
         format: Option<Format>,
         title: &str,
     ) -> Result<(), OutputError> {
         if let Some(file) = self.table.as_mut() {
             let out = BufWriter::new(file.file());
-            table::write_csv(out, outcomes, chaotic).map_err(OutputError::at(file.path()))?;
+            table::write_csv(out, outcomes, chaotic, trust)
+                .map_err(OutputError::at(file.path()))?;
         }
         if let (Some(file), Some(format)) = (self.plot.as_mut(), format) {
-            plot::write(file.file(), format, outcomes, chaotic, frames, title)
+            plot::write(file.file(), format, outcomes, chaotic, trust.horizon, title)
                 .map_err(OutputError::at(file.path()))?;
         }
         Ok(())

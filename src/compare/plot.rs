@@ -13,7 +13,7 @@ use crate::physics::maths;
 use crate::plot::{use_embedded_font, write_png, Format};
 
 use super::draw::COLOURS;
-use super::measure::Outcome;
+use super::measure::{Outcome, Role};
 use super::methods::LESSON;
 
 /// The picture's size, px.
@@ -23,13 +23,21 @@ const SIZE: (u32, u32) = (800, 560);
 const FLOOR_ERROR: f64 = 1e-13;
 
 /// What the vertical axis shows: the largest error, or, for balls that part chaotically,
-/// how many frames a method stays within a radius of the reference.
-fn value(outcome: &Outcome, chaotic: bool, frames: u32) -> f64 {
+/// how many frames a method stays within a radius of the reference (at most its `horizon`,
+/// past which the reference cannot tell).
+fn value(outcome: &Outcome, chaotic: bool, horizon: u32) -> f64 {
     if chaotic {
-        f64::from(outcome.stray.parted_at.unwrap_or(frames).max(1))
+        f64::from(outcome.stray.parted_at.unwrap_or(horizon).max(1))
     } else {
         outcome.stray.max_error.max(FLOOR_ERROR)
     }
+}
+
+/// The outcomes the plot shows, each with its place in `--methods` (for its colour): every
+/// method but the reference's own, which is not judged.
+fn judged(outcomes: &[Outcome]) -> impl Iterator<Item = (usize, &Outcome)> {
+    let judged = |(_, o): &(usize, &Outcome)| o.standing.role() == Role::Method;
+    outcomes.iter().enumerate().filter(judged)
 }
 
 /// A range around `values` for a log axis: from half the smallest to `above` times the
@@ -39,7 +47,10 @@ fn log_range(values: impl Iterator<Item = f64>, above: f64) -> std::ops::Range<f
         (lo.min(v), hi.max(v))
     });
     let (low, high) = (low / 2.0, high * above);
-    if high < low * 10.0 {
+    if low > high {
+        // No values (every method is the reference's own): any range will do.
+        1.0..10.0
+    } else if high < low * 10.0 {
         low / 3.0..high * 3.0
     } else {
         low..high
@@ -77,7 +88,7 @@ fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     outcomes: &[Outcome],
     chaotic: bool,
-    frames: u32,
+    horizon: u32,
     title: &str,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     root.fill(&WHITE)?;
@@ -86,7 +97,10 @@ fn draw<DB: DrawingBackend>(
         2.0,
     );
     // Room above for the lesson's ring, drawn 13 px around its point.
-    let y_range = log_range(outcomes.iter().map(|o| value(o, chaotic, frames)), 4.0);
+    let y_range = log_range(
+        judged(outcomes).map(|(_, o)| value(o, chaotic, horizon)),
+        4.0,
+    );
     let mut chart = ChartBuilder::on(root)
         .margin(16)
         .caption(title, ("sans-serif", 17))
@@ -111,10 +125,10 @@ fn draw<DB: DrawingBackend>(
         .max_light_lines(0)
         .bold_line_style(RGBColor(230, 230, 230))
         .draw()?;
-    for (k, outcome) in outcomes.iter().enumerate() {
+    for (k, outcome) in judged(outcomes) {
         let [r, g, b] = COLOURS[k];
         let colour = RGBColor(r, g, b);
-        let y = value(outcome, chaotic, frames);
+        let y = value(outcome, chaotic, horizon);
         let (x, timing) = (outcome.timing.median, &outcome.timing);
         chart.draw_series([PathElement::new(
             vec![(timing.min, y), (timing.max, y)],
@@ -152,7 +166,7 @@ pub fn write(
     format: Format,
     outcomes: &[Outcome],
     chaotic: bool,
-    frames: u32,
+    horizon: u32,
     title: &str,
 ) -> io::Result<()> {
     use_embedded_font()?;
@@ -161,13 +175,13 @@ pub fn write(
             let mut text = String::new();
             {
                 let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
-                draw(&root, outcomes, chaotic, frames, title).map_err(io::Error::other)?;
+                draw(&root, outcomes, chaotic, horizon, title).map_err(io::Error::other)?;
             }
             let mut out = out;
             out.write_all(text.as_bytes())
         }
         Format::Png => write_png(out, SIZE, |root| {
-            draw(root, outcomes, chaotic, frames, title)
+            draw(root, outcomes, chaotic, horizon, title)
         }),
     }
 }
