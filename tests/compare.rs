@@ -6,16 +6,24 @@ mod common;
 
 use std::path::Path;
 use std::process::{Command, Output};
+use std::sync::RwLock;
 
 use common::decode_gif;
 
+/// Every test's runs share this lock; a timed run takes it alone, so that the other tests'
+/// runs do not slow it down.
+static RUNS: RwLock<()> = RwLock::new(());
+
+fn compare_command(dir: &Path, args: &[&str]) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_bouncing_ball"));
+    command.arg("compare").args(args).current_dir(dir);
+    command
+}
+
 fn run_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
-        .arg("compare")
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
+    let _shared = RUNS.read().unwrap_or_else(|poisoned| poisoned.into_inner());
+    let output = compare_command(dir, args).output();
+    output.expect("the binary runs")
 }
 
 fn temp_dir() -> tempfile::TempDir {
@@ -460,6 +468,27 @@ fn a_chaotic_scene_past_the_references_horizon_judges_no_method_there() {
             "drift past the horizon"
         );
     }
+}
+
+#[test]
+fn a_comparison_predicted_over_the_time_budget_is_refused_at_once_in_one_line_and_no_file() {
+    // The pile in exact mode takes tens of seconds to compare; the estimate says so up front.
+    let dir = temp_dir();
+    let args = ["--preset", "pile", "--frames", "40", "--time-budget", "1"];
+    let alone = RUNS
+        .write()
+        .unwrap_or_else(|poisoned| poisoned.into_inner());
+    let started = std::time::Instant::now();
+    let output = compare_command(dir.path(), &args).output().unwrap();
+    let took = started.elapsed().as_secs_f64();
+    drop(alone);
+    let err = text(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
+    assert!(err.contains("--time-budget"), "names the knob: {err}");
+    assert!(took < 2.0, "refused after {took:.2} s, expected under 2 s");
+    let files: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert!(files.is_empty(), "left files behind: {files:?}");
 }
 
 #[test]

@@ -90,6 +90,25 @@ pub fn time_all(scene: &Scene, methods: &[Method]) -> Vec<Timing> {
         .collect()
 }
 
+/// How long [`time_all`] takes when one run of each method takes `runs` seconds: a first run
+/// each, then rounds in which every method runs for a repetition (at least [`REPETITION`]),
+/// as many rounds as fit in the timing budget, but at least enough for [`MIN_REPETITIONS`]
+/// and at most [`MAX_REPETITIONS`].
+pub fn timing_seconds(runs: &[f64]) -> f64 {
+    let repetition = REPETITION.as_secs_f64();
+    let round: f64 = runs.iter().map(|&run| run.max(repetition)).sum();
+    // A first run as long as a repetition is the first sample.
+    let first_counts = runs.iter().all(|&run| run >= repetition);
+    let (fewest, most) = match first_counts {
+        true => (MIN_REPETITIONS - 1, MAX_REPETITIONS - 1),
+        false => (MIN_REPETITIONS, MAX_REPETITIONS),
+    };
+    let budget = TIMING_BUDGET.as_secs_f64() * runs.len() as f64;
+    let fit = (budget / round.max(f64::MIN_POSITIVE)).ceil();
+    let rounds = fit.clamp(fewest as f64, most as f64);
+    runs.iter().sum::<f64>() + rounds * round
+}
+
 /// One method's results.
 #[derive(Clone, Debug)]
 pub struct Outcome {

@@ -4,6 +4,7 @@
 //! - [`methods`]: the methods, as `--methods` spells them (`rk4:4:exact`).
 //! - [`checks`]: what stops a comparison midway (a signal, numbers beyond the finite).
 //! - [`reference`]: what every method is measured against, and how far it converged.
+//! - [`estimate`]: how long the whole comparison will take, predicted before any work.
 //! - [`measure`]: the time per ball-frame, the error against the reference, the energy.
 //! - [`draw`]: the GIF's frames: every method in its colour, the reference as outlines, the
 //!   legend strip with each method's error so far.
@@ -16,6 +17,7 @@
 
 pub mod checks;
 pub mod draw;
+pub mod estimate;
 pub mod measure;
 pub mod methods;
 pub mod plot;
@@ -120,9 +122,15 @@ pub fn compare(scene: &Scene, outputs: &CompareOutputs) -> Result<Comparison, Ru
     let started = Instant::now();
     scene.validate()?;
     check_size(scene)?;
+    // Each method's memory and GIF size; the time is the whole comparison's, checked next.
+    let each = Budget {
+        seconds: f64::INFINITY,
+        ..outputs.budget
+    };
     for method in &outputs.methods {
-        Estimate::within(&method.on(scene), &outputs.budget)?;
+        Estimate::within(&method.on(scene), &each)?;
     }
+    estimate::check(scene, &outputs.methods, &outputs.budget)?;
     output::check(&outputs.list(), outputs.scene_file.as_deref())?;
     let plot_format = outputs.plot.as_deref().map(Format::of).transpose()?;
     let mut files = Files::create(outputs)?;

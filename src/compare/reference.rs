@@ -88,6 +88,17 @@ impl Reference {
     /// reference has more substeps than every method, or until the next doubling would pass
     /// the limit.
     pub fn of(scene: &Scene, methods: &[Method], stop: &Stop) -> Result<Reference, RunError> {
+        Reference::refined(scene, methods, most_substeps(scene), stop)
+    }
+
+    /// [`Reference::of`] with at most `most` substeps (a power of two): the estimate runs it on
+    /// the first frames of a scene, held to the whole scene's limit.
+    pub fn refined(
+        scene: &Scene,
+        methods: &[Method],
+        most: u32,
+        stop: &Stop,
+    ) -> Result<Reference, RunError> {
         let finest = methods.iter().map(|m| m.substeps).max().unwrap_or(1);
         let mut method = rk4(1);
         let mut trajectory = run(scene, method, stop)?;
@@ -100,7 +111,7 @@ impl Reference {
         let settled = |v: Verdict| matches!(v, Verdict::Converged | Verdict::Stalled);
         while !(settled(verdict) && method.substeps > finest) {
             let finer = rk4(method.substeps * 2);
-            if exceeds_limit(scene, finer.substeps) {
+            if finer.substeps > most {
                 limited = true;
                 break;
             }
@@ -210,7 +221,7 @@ impl Reference {
 }
 
 /// RK4 with exact collisions and `substeps`: the reference's method.
-fn rk4(substeps: u32) -> Method {
+pub fn rk4(substeps: u32) -> Method {
     Method {
         integrator: Integrator::Rk4,
         substeps,
@@ -218,9 +229,16 @@ fn rk4(substeps: u32) -> Method {
     }
 }
 
-/// Whether a run of `scene` with `substeps` would pass the substep or the work limit.
-pub fn exceeds_limit(scene: &Scene, substeps: u32) -> bool {
-    substeps > MAX_SUBSTEPS || work(scene, substeps) > MAX_REFERENCE_STEPS
+/// The most substeps a run of the reference on `scene` may take: the largest power of two
+/// within the substep and work limits (1 at least: there is always a first run).
+pub fn most_substeps(scene: &Scene) -> u32 {
+    let within =
+        |substeps| substeps <= MAX_SUBSTEPS && work(scene, substeps) <= MAX_REFERENCE_STEPS;
+    let mut most = 1;
+    while within(most * 2) {
+        most *= 2;
+    }
+    most
 }
 
 /// The largest of `values` (0 for none).
