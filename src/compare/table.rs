@@ -107,6 +107,12 @@ pub fn text(
         out.push('\n');
     }
     out += energy_meaning(conserves);
+    if !conserves && trust.horizon < frames {
+        out += &format!(
+            "; left out here: the reference is trusted only up to frame {}",
+            trust.horizon
+        );
+    }
     out.push('\n');
     out
 }
