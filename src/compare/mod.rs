@@ -311,7 +311,7 @@ impl Files {
                 .map_err(OutputError::at(file.path()))?;
         }
         if let (Some(file), Some(format)) = (self.plot.as_mut(), format) {
-            plot::write(file.file(), format, outcomes, chaotic, trust.horizon, title)
+            plot::write(file.file(), format, outcomes, chaotic, trust, title)
                 .map_err(OutputError::at(file.path()))?;
         }
         Ok(())

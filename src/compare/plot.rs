@@ -1,6 +1,7 @@
 //! The work-precision diagram (`--plot`): each method's error against its time per
 //! ball-frame, both on log scales, one point per method in its GIF colour with its min–max
-//! timing as a bar, and the lesson's point ringed. Down and to the left is better: cheaper
+//! timing as a bar, and the lesson's point ringed; a grey line where the reference stops
+//! telling (its uncertainty, or its horizon). Down and to the left is better: cheaper
 //! and closer to the reference. SVG, or PNG for a path ending in `.png`, with the `--plot`
 //! picture's font and look ([`crate::plot`]).
 
@@ -13,7 +14,7 @@ use crate::physics::maths;
 use crate::plot::{use_embedded_font, write_png, Format};
 
 use super::draw::COLOURS;
-use super::measure::{Outcome, Role};
+use super::measure::{Outcome, Role, Trust};
 use super::methods::LESSON;
 
 /// The picture's size, px.
@@ -88,25 +89,33 @@ fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     outcomes: &[Outcome],
     chaotic: bool,
-    horizon: u32,
+    trust: Trust,
     title: &str,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     root.fill(&WHITE)?;
+    let horizon = trust.horizon;
+    // The line past which the reference tells no more: its uncertainty, under which errors
+    // are not resolved, or for colliding balls its horizon, which no method can pass.
+    let (limit, limit_name) = if chaotic {
+        (f64::from(horizon.max(1)), "the reference's horizon")
+    } else {
+        let uncertainty = trust.uncertainty.max(FLOOR_ERROR);
+        (uncertainty, "the reference's uncertainty")
+    };
+    let limit = Some(limit).filter(|l| l.is_finite());
     let x_range = log_range(
         outcomes.iter().flat_map(|o| [o.timing.min, o.timing.max]),
         2.0,
     );
     // Room above for the lesson's ring, drawn 13 px around its point.
-    let y_range = log_range(
-        judged(outcomes).map(|(_, o)| value(o, chaotic, horizon)),
-        4.0,
-    );
+    let values = judged(outcomes).map(|(_, o)| value(o, chaotic, horizon));
+    let y_range = log_range(values.chain(limit), 4.0);
     let mut chart = ChartBuilder::on(root)
         .margin(16)
         .caption(title, ("sans-serif", 17))
         .x_label_area_size(44)
         .y_label_area_size(80)
-        .build_cartesian_2d(x_range.log_scale(), y_range.log_scale())?;
+        .build_cartesian_2d(x_range.clone().log_scale(), y_range.log_scale())?;
     let y_desc = if chaotic {
         "frames before a ball is more than a radius off (higher is better)"
     } else {
@@ -125,6 +134,14 @@ fn draw<DB: DrawingBackend>(
         .max_light_lines(0)
         .bold_line_style(RGBColor(230, 230, 230))
         .draw()?;
+    if let Some(y) = limit {
+        let grey = RGBColor(150, 150, 150);
+        let across = vec![(x_range.start, y), (x_range.end, y)];
+        chart
+            .draw_series([PathElement::new(across, grey.stroke_width(2))])?
+            .label(limit_name)
+            .legend(move |(x, y)| PathElement::new(vec![(x - 6, y), (x + 6, y)], grey));
+    }
     for (k, outcome) in judged(outcomes) {
         let [r, g, b] = COLOURS[k];
         let colour = RGBColor(r, g, b);
@@ -166,7 +183,7 @@ pub fn write(
     format: Format,
     outcomes: &[Outcome],
     chaotic: bool,
-    horizon: u32,
+    trust: Trust,
     title: &str,
 ) -> io::Result<()> {
     use_embedded_font()?;
@@ -175,13 +192,13 @@ pub fn write(
             let mut text = String::new();
             {
                 let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
-                draw(&root, outcomes, chaotic, horizon, title).map_err(io::Error::other)?;
+                draw(&root, outcomes, chaotic, trust, title).map_err(io::Error::other)?;
             }
             let mut out = out;
             out.write_all(text.as_bytes())
         }
         Format::Png => write_png(out, SIZE, |root| {
-            draw(root, outcomes, chaotic, horizon, title)
+            draw(root, outcomes, chaotic, trust, title)
         }),
     }
 }
