@@ -53,8 +53,10 @@ impl Trajectory {
 pub struct Reference {
     pub method: Method,
     pub trajectory: Trajectory,
-    /// At each frame, how far its last two refinements are apart (the largest distance at
-    /// any ball), px: the reference's own uncertainty. Infinite if there was only one run.
+    /// At each frame, the reference's own uncertainty so far: the largest distance between
+    /// its last two refinements at any ball in that frame or an earlier one, px (so it only
+    /// grows, and the legend reads it frame by frame at no cost). Infinite if there was only
+    /// one run.
     pub uncertainty: Vec<f64>,
     /// The first frame in which the last two refinements are more than a ball's radius
     /// apart, from where the reference no longer says where the balls are; the frame count
@@ -164,8 +166,8 @@ impl Reference {
     /// The largest uncertainty in the first `seen` frames before the horizon (the first
     /// frame's if the reference is trusted in none), px.
     fn largest_uncertainty(&self, seen: u32) -> f64 {
-        let trusted = self.horizon.min(seen).max(1) as usize;
-        largest(&self.uncertainty[..trusted.min(self.uncertainty.len())])
+        let last = self.horizon.min(seen).max(1) as usize - 1;
+        self.uncertainty.get(last).copied().unwrap_or(0.0)
     }
 
     /// What the reference is and how far it is trusted, a line each: `rk4:8:exact: agrees
@@ -241,15 +243,17 @@ pub fn most_substeps(scene: &Scene) -> u32 {
     most
 }
 
-/// The largest of `values` (0 for none).
-fn largest(values: &[f64]) -> f64 {
-    values.iter().copied().fold(0.0, f64::max)
+/// The largest of an uncertainty over the whole run: its last frame's (0 for no frame).
+fn largest(uncertainty: &[f64]) -> f64 {
+    uncertainty.last().copied().unwrap_or(0.0)
 }
 
-/// How far two runs are apart: at each frame the largest distance at any ball, px, and the
-/// first frame in which some ball is more than its radius off (the frame count if none).
+/// How far two runs are apart: at each frame the largest distance at any ball in that frame
+/// or an earlier one, px, and the first frame in which some ball is more than its radius off
+/// (the frame count if none).
 fn apart(finer: &Trajectory, coarser: &Trajectory, scene: &Scene) -> (Vec<f64>, u32) {
     let mut horizon = None;
+    let mut so_far = 0.0;
     let distances = (0..scene.frames as usize)
         .map(|n| {
             let pairs = finer
@@ -257,13 +261,14 @@ fn apart(finer: &Trajectory, coarser: &Trajectory, scene: &Scene) -> (Vec<f64>, 
                 .iter()
                 .zip(coarser.frame(n))
                 .zip(&scene.balls);
-            pairs.fold(0.0, |far: f64, ((a, b), ball)| {
+            so_far = pairs.fold(so_far, |far: f64, ((a, b), ball)| {
                 let distance = (*a - *b).length();
                 if distance > ball.radius && horizon.is_none() {
                     horizon = Some(n as u32);
                 }
                 far.max(distance)
-            })
+            });
+            so_far
         })
         .collect();
     (distances, horizon.unwrap_or(scene.frames))
