@@ -33,7 +33,7 @@ pub fn short(value: f64) -> String {
 }
 
 /// What the table says of a method against the reference.
-pub fn judgement(standing: Standing, chaotic: bool) -> String {
+fn judgement(standing: Standing, chaotic: bool) -> String {
     match standing {
         Standing::Reference => "the reference (not judged)".to_string(),
         Standing::Parted(frame) => format!("parted at frame {frame}"),
@@ -127,6 +127,8 @@ pub fn write_csv(
     writeln!(out, "{CSV_HEADER}")?;
     for outcome in outcomes {
         let timing = &outcome.timing;
+        // No error for the reference's own method, nor where no frame was measured (a
+        // reference trusted in none).
         let measured = match outcome.standing {
             Standing::Reference | Standing::AsFarAsKnown(0) => false,
             _ => !chaotic,
