@@ -12,7 +12,7 @@ use std::process::Command;
 use std::time::{Duration, Instant};
 
 use bouncing_ball::scene::file::{preset, PRESETS};
-use bouncing_ball::{run, Job, Role};
+use bouncing_ball::{run, Job, OutputKind};
 
 /// `gifsicle -O3` of each preset's GIF as the encoder wrote it before it chose per-frame
 /// encodings (one global 256- or 128-entry table, no transparency), measured once with
@@ -85,11 +85,11 @@ fn main() {
             .collect();
         times.sort();
         let median_ms = times[times.len() / 2].as_secs_f64() * 1e3;
-        let ours = std::fs::metadata(outputs.path(Role::Gif).unwrap())
+        let ours = std::fs::metadata(outputs.path(OutputKind::Gif).unwrap())
             .expect("the GIF")
             .len();
         let optimised = if gifsicle_found {
-            gifsicle_o3(outputs.path(Role::Gif).unwrap())
+            gifsicle_o3(outputs.path(OutputKind::Gif).unwrap())
         } else {
             None
         };

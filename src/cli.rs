@@ -13,7 +13,7 @@ use clap_complete::Shell;
 
 use crate::budget::{Budget, DEFAULT_GIF_BUDGET, DEFAULT_MEMORY_BUDGET, DEFAULT_TIME_BUDGET};
 use crate::compare::methods::{self, MethodList};
-use crate::job::{Job, Role, Summary};
+use crate::job::{Job, OutputKind, Summary};
 use crate::messages::{flag, refuse, seconds, summary_line, whole_number, Failure};
 use crate::scene::file::Canvas;
 use crate::scene::{self, preset_names, Overrides, Scene, SceneFileError};
@@ -155,11 +155,14 @@ impl SkipArgs {
     fn pictures(&self, job: Job, gif: &Path, png: Option<&PathBuf>) -> Job {
         let job = match self.no_gif {
             true => job,
-            false => job.with(Role::Gif, gif),
+            false => job.with(OutputKind::Gif, gif),
         };
         match self.no_png {
             true => job,
-            false => job.with(Role::Png, png.cloned().unwrap_or(gif.with_extension("png"))),
+            false => job.with(
+                OutputKind::Png,
+                png.cloned().unwrap_or(gif.with_extension("png")),
+            ),
         }
     }
 }
@@ -286,10 +289,10 @@ impl Cli {
             .skip
             .pictures(self.job(&args.scene), &args.gif, args.png.as_ref());
         if let Some(path) = &args.trace {
-            job = job.with(Role::Trace, path);
+            job = job.with(OutputKind::Trace, path);
         }
         if let Some(path) = args.plot.as_ref().or(scene.plot.as_ref()) {
-            job = job.with(Role::Plot, path);
+            job = job.with(OutputKind::Plot, path);
         }
         nothing_left_out(&job, "--trace or --plot")?;
         let summary = crate::run(&scene, &job).map_err(|error| {
@@ -315,10 +318,10 @@ impl Cli {
             .skip
             .pictures(self.job(&args.scene), &args.gif, args.png.as_ref());
         if let Some(path) = &args.table {
-            job = job.with(Role::Table, path);
+            job = job.with(OutputKind::Table, path);
         }
         if let Some(path) = &args.plot {
-            job = job.with(Role::Plot, path);
+            job = job.with(OutputKind::Plot, path);
         }
         nothing_left_out(&job, "--table or --plot")?;
         let done = compare::compare(&scene, &args.methods, &job).map_err(|error| {
@@ -344,10 +347,10 @@ impl Cli {
         if scene.scene.as_deref().is_some_and(output::is_stdout) {
             return Err(Failure::input("--scene -: a sweep reads its scene once per panel; give a file, not standard input"));
         }
-        let mut job = self.job(scene).with(Role::Gif, &args.gif);
+        let mut job = self.job(scene).with(OutputKind::Gif, &args.gif);
         if let Some(path) = &args.png {
             let path = path.clone().unwrap_or(args.gif.with_extension("png"));
-            job = job.with(Role::Png, path);
+            job = job.with(OutputKind::Png, path);
         }
         let result = sweep
             .panels(typed, |change| scene.changed(change, &self.lesson))

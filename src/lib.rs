@@ -37,6 +37,6 @@ pub mod stop;
 pub mod sweep;
 pub mod trace;
 
-pub use job::{Job, Role, RunError, Summary};
+pub use job::{Job, OutputKind, RunError, Summary};
 pub use run::run;
 pub use scene::{BallSpec, Scene};

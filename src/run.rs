@@ -10,7 +10,7 @@ use std::io::Write;
 
 use crate::budget::Estimate;
 use crate::job::files::{Gif, Writer};
-use crate::job::{Files, Job, Role, RunError, Summary};
+use crate::job::{Files, Job, OutputKind, RunError, Summary};
 use crate::output::OutputError;
 use crate::physics::Ball;
 use crate::plot::Plot;
@@ -27,7 +27,9 @@ pub fn run(scene: &Scene, job: &Job) -> Result<Summary, RunError> {
     let estimate = Estimate::within(scene, &job.budget)?;
     job.check()?;
     let renderer = Renderer::new(scene)?;
-    let plot = job.path(Role::Plot).map(|path| Plot::new(scene, path));
+    let plot = job
+        .path(OutputKind::Plot)
+        .map(|path| Plot::new(scene, path));
     let plot = plot.transpose()?;
     let files = job.open(&estimate.warnings(scene))?;
     let mut writers = Writers::open(scene, &renderer, plot, &files)?;
@@ -94,9 +96,9 @@ impl<'a> Writers<'a> {
     ) -> Result<Writers<'a>, OutputError> {
         let size = (scene.width, scene.height);
         let gif = files.start_gif(size, renderer.palette(), scene.frame_ms)?;
-        let mut trace = files.writer(Role::Trace)?;
+        let mut trace = files.writer(OutputKind::Trace)?;
         if let Some(out) = trace.as_mut() {
-            trace::write_header(out).map_err(files.error_at(Role::Trace))?;
+            trace::write_header(out).map_err(files.error_at(OutputKind::Trace))?;
         }
         Ok(Writers {
             files,
@@ -109,7 +111,7 @@ impl<'a> Writers<'a> {
     /// Records frame `n`'s `balls` in the trace and the plot, each if asked for.
     fn record(&mut self, n: u32, balls: &[Ball]) -> Result<(), OutputError> {
         if let Some(out) = self.trace.as_mut() {
-            trace::write_frame(out, n, balls).map_err(self.files.error_at(Role::Trace))?;
+            trace::write_frame(out, n, balls).map_err(self.files.error_at(OutputKind::Trace))?;
         }
         if let Some(plot) = self.plot.as_mut() {
             plot.record(balls);
@@ -128,12 +130,12 @@ impl<'a> Writers<'a> {
         let files = self.files;
         files.finish_pictures(self.gif, last_frame, palette)?;
         if let Some(mut out) = self.trace {
-            out.flush().map_err(files.error_at(Role::Trace))?;
+            out.flush().map_err(files.error_at(OutputKind::Trace))?;
         }
-        if let (Some(plot), Some(mut out)) = (self.plot, files.writer(Role::Plot)?) {
+        if let (Some(plot), Some(mut out)) = (self.plot, files.writer(OutputKind::Plot)?) {
             plot.write(&mut out)
                 .and_then(|()| out.flush())
-                .map_err(files.error_at(Role::Plot))?;
+                .map_err(files.error_at(OutputKind::Plot))?;
         }
         Ok(())
     }

@@ -6,16 +6,24 @@ mod common;
 
 use std::path::Path;
 use std::process::{Command, Output};
+use std::sync::RwLock;
 
 use common::decode_gif;
 
+/// Every test's runs share this lock; a timed run takes it alone, so that the other tests'
+/// runs do not slow it down.
+static RUNS: RwLock<()> = RwLock::new(());
+
+fn compare_command(dir: &Path, args: &[&str]) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_bouncing_ball"));
+    command.arg("compare").args(args).current_dir(dir);
+    command
+}
+
 fn run_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
-        .arg("compare")
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
+    let _shared = RUNS.read().unwrap_or_else(|poisoned| poisoned.into_inner());
+    let output = compare_command(dir, args).output();
+    output.expect("the binary runs")
 }
 
 fn temp_dir() -> tempfile::TempDir {
@@ -117,8 +125,9 @@ fn moon_writes_the_gif_the_table_and_the_plot_with_the_lesson_far_behind_the_bes
         errors[0]
     );
     // Under gravity alone RK4 and Verlet fly the exact parabola and exact mode bounces at the
-    // exact moment: the reference converges at once, and both agree with it to rounding.
-    assert!(printed.contains("reference: rk4:2:exact") && printed.contains("(converged"));
+    // exact moment: the reference converges at once, and both agree with it to rounding. It
+    // is still refined once past the finest method (rk4:4:exact), to be finer than it.
+    assert!(printed.contains("reference: rk4:8:exact") && printed.contains("(converged"));
     assert!(best < 1e-9, "an exact method strays {best} px");
     for method in DEFAULT_METHODS {
         assert!(printed.contains(method), "the printed table names {method}");
@@ -335,6 +344,150 @@ fn colliding_balls_report_when_each_method_parts_from_the_reference() {
             "parted at {parted:?}"
         );
     }
+}
+
+#[test]
+fn the_moons_reference_is_trusted_to_the_last_frame_and_the_lesson_is_far_outside_its_uncertainty()
+{
+    let dir = temp_dir();
+    compare_ok(dir.path(), &["--preset", "moon", "--table", "t.csv", "-q"]);
+    let rows = table(&dir.path().join("t.csv"));
+    for row in &rows {
+        assert_eq!(row.get("role"), "method", "{}", row.get("method"));
+        let horizon = row.number("reference_horizon_frame");
+        assert_eq!(
+            horizon, 200.0,
+            "the reference converges: trusted in all 200 frames"
+        );
+    }
+    let uncertainty = rows[0].number("reference_uncertainty_px");
+    let errors: Vec<f64> = rows
+        .iter()
+        .map(|r| r.number("max_position_error_px"))
+        .collect();
+    let best = errors[1..].iter().copied().fold(f64::INFINITY, f64::min);
+    let floor = best.max(uncertainty);
+    assert!(
+        errors[0] >= 1000.0 * floor,
+        "the lesson's error {} px should be at least 1000 times {floor} px (the best method's \
+         error {best} px, the reference's uncertainty {uncertainty} px)",
+        errors[0]
+    );
+}
+
+#[test]
+fn on_billiards_the_reference_is_finer_than_every_method_and_no_method_scores_0() {
+    let dir = temp_dir();
+    let printed = compare_ok(dir.path(), &["--preset", "billiards", "--table", "t.csv"]);
+    // The finest default method is rk4:4:exact: the reference has more substeps.
+    assert!(printed.starts_with("reference: rk4:8:exact"), "{printed}");
+    let rows = table(&dir.path().join("t.csv"));
+    for row in &rows {
+        let method = row.get("method");
+        assert_eq!(row.get("role"), "method", "{method} is judged");
+        let horizon = row.number("reference_horizon_frame");
+        assert!(
+            (0.0..=200.0).contains(&horizon),
+            "{method}: horizon {horizon}"
+        );
+        let error = row.get("max_position_error_px");
+        assert!(
+            error.is_empty() || row.number("max_position_error_px") > 0.0,
+            "{method}: error {error:?} px"
+        );
+    }
+}
+
+#[test]
+fn the_references_own_method_is_named_the_reference_and_not_scored() {
+    // On billiards the work limit stops the reference at rk4:128:exact: listed, it cannot
+    // be outdone, so its row is the reference's, not a method's with an error of 0.
+    let dir = temp_dir();
+    let methods = "semi-implicit-euler:1:clamp,rk4:128:exact";
+    let printed = compare_ok(
+        dir.path(),
+        &[
+            "--preset",
+            "billiards",
+            "--methods",
+            methods,
+            "--table",
+            "t.csv",
+        ],
+    );
+    assert!(
+        printed.contains("not finer than the finest method"),
+        "{printed}"
+    );
+    let rows = table(&dir.path().join("t.csv"));
+    let roles: Vec<&str> = rows.iter().map(|r| r.get("role")).collect();
+    assert_eq!(roles, ["method", "reference"]);
+    let reference = &rows[1];
+    assert_eq!(reference.get("max_position_error_px"), "");
+    assert_eq!(reference.get("parted_at_frame"), "");
+    assert!(
+        !reference.get("energy_drift").is_empty(),
+        "the energy drift needs no reference in a scene that keeps its energy"
+    );
+    let horizon = reference.number("reference_horizon_frame");
+    assert!((0.0..=200.0).contains(&horizon), "horizon {horizon}");
+}
+
+#[test]
+fn a_chaotic_scene_past_the_references_horizon_judges_no_method_there() {
+    // 600 frames of billiards: the reference's last two refinements part before the end.
+    let dir = temp_dir();
+    let printed = compare_ok(
+        dir.path(),
+        &[
+            "--preset",
+            "billiards",
+            "--frames",
+            "600",
+            "--table",
+            "t.csv",
+        ],
+    );
+    let rows = table(&dir.path().join("t.csv"));
+    let horizon = rows[0].number("reference_horizon_frame");
+    assert!(horizon < 600.0, "horizon {horizon} of 600 frames");
+    assert!(printed.contains("no method is judged there"), "{printed}");
+    for row in &rows {
+        let parted = row.get("parted_at_frame");
+        let said = match parted.parse::<f64>() {
+            Ok(frame) => {
+                assert!(frame < horizon, "parted at {frame}, horizon {horizon}");
+                format!("parted at frame {parted}")
+            }
+            Err(_) => format!("as far as the reference can tell (frame {horizon})"),
+        };
+        assert!(printed.contains(&said), "{said:?} in {printed}");
+        assert!(
+            !row.get("energy_drift").is_empty(),
+            "drift past the horizon"
+        );
+    }
+}
+
+#[test]
+fn a_comparison_predicted_over_the_time_budget_is_refused_at_once_in_one_line_and_no_file() {
+    // The pile in exact mode takes tens of seconds to compare; the estimate says so up front.
+    let dir = temp_dir();
+    let args = ["--preset", "pile", "--frames", "40", "--time-budget", "1"];
+    let alone = RUNS
+        .write()
+        .unwrap_or_else(|poisoned| poisoned.into_inner());
+    let started = std::time::Instant::now();
+    let output = compare_command(dir.path(), &args).output().unwrap();
+    let took = started.elapsed().as_secs_f64();
+    drop(alone);
+    let err = text(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
+    assert!(err.contains("--time-budget"), "names the knob: {err}");
+    assert!(took < 2.0, "refused after {took:.2} s, expected under 2 s");
+    let files: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert!(files.is_empty(), "left files behind: {files:?}");
 }
 
 #[test]

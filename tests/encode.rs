@@ -15,7 +15,7 @@ use bouncing_ball::render::palette::Palette;
 use bouncing_ball::render::IndexedFrame;
 use bouncing_ball::render::Renderer;
 use bouncing_ball::scene::random::Random;
-use bouncing_ball::{run, BallSpec, Job, Role, Scene};
+use bouncing_ball::{run, BallSpec, Job, OutputKind, Scene};
 use common::{decode_gif, lesson_scene, render_frames};
 use image::Luma;
 
@@ -23,7 +23,7 @@ use image::Luma;
 fn write_gif(scene: &Scene, dir: &Path) -> std::path::PathBuf {
     let outputs = Job::pictures(dir.join("scene.gif"), dir.join("scene.png"));
     run(scene, &outputs).expect("the scene runs");
-    outputs.path(Role::Gif).unwrap().to_path_buf()
+    outputs.path(OutputKind::Gif).unwrap().to_path_buf()
 }
 
 /// Decodes `scene`'s GIF and checks every frame against the renderer's, pixel for pixel.

@@ -23,7 +23,7 @@ use std::time::Duration;
 
 use bouncing_ball::budget::Estimate;
 use bouncing_ball::scene::file;
-use bouncing_ball::{run, Job, Role};
+use bouncing_ball::{run, Job, OutputKind};
 use common::process::{args, changes, run_capped, snapshot, Caps, Finished, OddFolder, Request};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -598,10 +598,10 @@ fn generated_scenes_run_through_the_library_write_decodable_files_or_nothing() {
             let outputs = Job::pictures(dir.path().join("a.gif"), dir.path().join("a.png"));
             match run(&scene, &outputs) {
                 Ok(summary) => {
-                    let gif = common::decode_gif(outputs.path(Role::Gif).unwrap());
+                    let gif = common::decode_gif(outputs.path(OutputKind::Gif).unwrap());
                     let frame_cs = (scene.frame_ms / 10) as u16;
                     prop_assert_eq!(gif.timeline(frame_cs).len() as u32, summary.frames);
-                    prop_assert!(image::open(outputs.path(Role::Png).unwrap()).is_ok());
+                    prop_assert!(image::open(outputs.path(OutputKind::Png).unwrap()).is_ok());
                 }
                 Err(e) => {
                     prop_assert_eq!(e.to_string().lines().count(), 1, "{}", e);

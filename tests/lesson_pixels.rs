@@ -11,7 +11,7 @@ use std::collections::BTreeSet;
 use bouncing_ball::render::ellipse::fill_circle;
 use bouncing_ball::render::IndexedFrame;
 use bouncing_ball::scene::file as scene_file;
-use bouncing_ball::{run, Job, Role};
+use bouncing_ball::{run, Job, OutputKind};
 use common::{decode_gif, lesson_scene, REBLESS};
 
 /// CRC-32 of each of the script's frames for `scene`, in frame order.
@@ -40,7 +40,7 @@ fn every_frame_of_our_gifs_equals_the_lesson_scripts_frame() {
             dir.path().join(format!("{name}.png")),
         );
         run(&scene, &outputs).unwrap();
-        let ours: Vec<u32> = decode_gif(outputs.path(Role::Gif).unwrap())
+        let ours: Vec<u32> = decode_gif(outputs.path(OutputKind::Gif).unwrap())
             .frames
             .iter()
             .map(|frame| crc32fast::hash(frame.as_raw()))

@@ -7,7 +7,7 @@ mod common;
 use std::path::Path;
 
 use bouncing_ball::scene::file::{self as scene_file, PRESETS};
-use bouncing_ball::{run, Job, Role};
+use bouncing_ball::{run, Job, OutputKind};
 use common::{decode_gif, render_frames};
 
 #[test]
@@ -22,7 +22,7 @@ fn every_preset_gif_in_scenes_matches_a_fresh_render_byte_for_byte() {
             dir.path().join(format!("{name}.png")),
         );
         run(&scene, &outputs).unwrap_or_else(|e| panic!("preset {name}: {e}"));
-        let fresh = std::fs::read(outputs.path(Role::Gif).unwrap()).unwrap();
+        let fresh = std::fs::read(outputs.path(OutputKind::Gif).unwrap()).unwrap();
         let committed_path =
             Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.gif"));
         if update {

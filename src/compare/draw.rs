@@ -11,7 +11,9 @@ use crate::render::raster::Renderer;
 use crate::render::text::{draw_text, text_width, TEXT_HEIGHT};
 use crate::scene::{BallSpec, Rgb, Scene};
 
-use super::methods::MAX_METHODS;
+use super::measure::{Standing, Trust};
+use super::methods::{Method, MAX_METHODS};
+use super::table::short;
 
 /// Each method's colour, in the order `--methods` lists them (the first is the lesson's ball
 /// colour): far apart in hue, and bright on the lesson's black.
@@ -33,6 +35,63 @@ const GAP: u32 = 4;
 pub struct LegendRow {
     pub label: String,
     pub status: String,
+}
+
+impl LegendRow {
+    /// The row of `method`, standing as `standing` so far.
+    pub fn new(method: Method, standing: Standing) -> LegendRow {
+        let status = match standing {
+            Standing::Reference => "the reference".to_string(),
+            Standing::Parted(frame) => format!("parted at frame {frame}"),
+            Standing::AsFarAsKnown(frame) => {
+                format!("agrees as far as the reference can tell (frame {frame})")
+            }
+            // The number is in the table; here it would widen every GIF by a third.
+            Standing::BelowUncertainty(_) => "below the reference's uncertainty".to_string(),
+            Standing::Error(px) => format!("error {} px", short(px)),
+        };
+        LegendRow {
+            label: method.to_string(),
+            status,
+        }
+    }
+
+    /// The row as drawn.
+    fn text(&self) -> String {
+        format!("{}  {}", self.label, self.status)
+    }
+}
+
+/// The longest texts a legend row of each of `methods` can show over `frames` frames against
+/// a reference trusted as `trust` (`chaotic` when the balls collide), for the picture's width.
+pub fn widest_rows(methods: &[Method], trust: Trust, chaotic: bool, frames: u32) -> Vec<String> {
+    let mut statuses = vec![
+        Standing::Error(8888.88),
+        Standing::Error(8.8e-88),
+        Standing::Parted(trust.horizon.min(frames)),
+        Standing::BelowUncertainty(0.0),
+        Standing::Reference,
+    ];
+    if !trust.tells(chaotic, frames) {
+        statuses.push(Standing::AsFarAsKnown(trust.horizon));
+    }
+    let rows = methods
+        .iter()
+        .flat_map(|&m| statuses.iter().map(move |&s| LegendRow::new(m, s)));
+    rows.map(|row| row.text()).collect()
+}
+
+/// The legend's last row: the reference, and up to which frame it is trusted if not to the
+/// end.
+pub fn reference_row(method: Method, trust: Trust, frames: u32) -> String {
+    if trust.horizon < frames {
+        format!(
+            "reference {method} (outlines), trusted up to frame {}",
+            trust.horizon
+        )
+    } else {
+        format!("reference {method} (outlines)")
+    }
 }
 
 /// Draws the comparison's frames.
@@ -203,7 +262,7 @@ impl Picture {
             let text = match legend.get(row) {
                 Some(entry) => {
                     fill_circle(&mut self.frame, swatch_x, centre_y, radius, *ink);
-                    format!("{}  {}", entry.label, entry.status)
+                    entry.text()
                 }
                 None => {
                     outline_circle(&mut self.frame, swatch_x, centre_y, radius, *ink);

@@ -90,12 +90,33 @@ pub fn time_all(scene: &Scene, methods: &[Method]) -> Vec<Timing> {
         .collect()
 }
 
+/// How long [`time_all`] takes when one run of each method takes `runs` seconds: a first run
+/// each, then rounds in which every method runs for a repetition (at least [`REPETITION`]),
+/// as many rounds as fit in the timing budget, but at least enough for [`MIN_REPETITIONS`]
+/// and at most [`MAX_REPETITIONS`].
+pub fn timing_seconds(runs: &[f64]) -> f64 {
+    let repetition = REPETITION.as_secs_f64();
+    let round: f64 = runs.iter().map(|&run| run.max(repetition)).sum();
+    // A first run as long as a repetition is the first sample.
+    let first_counts = runs.iter().all(|&run| run >= repetition);
+    let (fewest, most) = match first_counts {
+        true => (MIN_REPETITIONS - 1, MAX_REPETITIONS - 1),
+        false => (MIN_REPETITIONS, MAX_REPETITIONS),
+    };
+    let budget = TIMING_BUDGET.as_secs_f64() * runs.len() as f64;
+    let fit = (budget / round.max(f64::MIN_POSITIVE)).ceil();
+    let rounds = fit.clamp(fewest as f64, most as f64);
+    runs.iter().sum::<f64>() + rounds * round
+}
+
 /// One method's results.
 #[derive(Clone, Debug)]
 pub struct Outcome {
     pub method: Method,
     pub timing: Timing,
     pub stray: Stray,
+    /// What can be said of it against the reference.
+    pub standing: Standing,
     /// See [`super::table`]'s note under the table; `None` when the scene starts with no energy.
     pub energy_drift: Option<f64>,
 }
@@ -134,24 +155,121 @@ pub fn conserves_energy(scene: &Scene) -> bool {
             .is_none_or(|restitution| restitution == 1.0)
 }
 
-/// How far one method has strayed from the reference, frame by frame.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// How far one method has strayed from the reference, frame by frame, in the frames before
+/// the reference's horizon (past it the reference no longer says where the balls are).
+#[derive(Clone, Debug, PartialEq)]
 pub struct Stray {
     /// The largest distance of any ball from its reference so far, px.
     pub max_error: f64,
     /// The first frame in which some ball was more than its radius from its reference.
     pub parted_at: Option<u32>,
+    /// The reference's horizon: frames from here on are not measured.
+    horizon: u32,
 }
 
 impl Stray {
+    /// Nothing strayed yet, measured against a reference trusted up to `horizon`.
+    pub fn until(horizon: u32) -> Stray {
+        Stray {
+            max_error: 0.0,
+            parted_at: None,
+            horizon,
+        }
+    }
+
     /// Takes in frame `n`: the method's `balls` and the reference's `centres`.
     pub fn frame(&mut self, n: u32, balls: &[Ball], centres: &[Vec2]) {
+        if n >= self.horizon {
+            return;
+        }
         for (ball, &centre) in balls.iter().zip(centres) {
             let error = (ball.position() - centre).length();
             self.max_error = self.max_error.max(error);
             if error > ball.radius && self.parted_at.is_none() {
                 self.parted_at = Some(n);
             }
+        }
+    }
+}
+
+/// How far the reference can be trusted: what every method is judged by.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Trust {
+    /// The largest uncertainty before the horizon, px: a smaller error says nothing.
+    pub uncertainty: f64,
+    /// The first frame the reference does not say where the balls are.
+    pub horizon: u32,
+}
+
+impl Trust {
+    /// Whether the reference can tell how far a method is off over the first `seen` frames:
+    /// not at all when it is trusted in no frame, and for colliding balls (`chaotic`) not
+    /// past its horizon, where any error is as likely as any other.
+    pub fn tells(self, chaotic: bool, seen: u32) -> bool {
+        self.horizon > 0 && !(chaotic && self.horizon < seen)
+    }
+}
+
+/// What a row of the table is: a method judged against the reference, or the reference's
+/// own method, shown but not judged (it would agree with itself exactly).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    Method,
+    Reference,
+}
+
+impl Role {
+    /// As the CSV writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Role::Method => "method",
+            Role::Reference => "reference",
+        }
+    }
+}
+
+/// What can be said of a method against the reference.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Standing {
+    /// It is the reference's own method: shown, not judged.
+    Reference,
+    /// Some ball was more than its radius off in this frame, before the horizon (colliding
+    /// balls: from then on the runs are different games).
+    Parted(u32),
+    /// It stayed within a radius up to the horizon, and the reference can tell no further
+    /// (colliding balls, or a reference not even checked).
+    AsFarAsKnown(u32),
+    /// Its largest error is smaller than the reference's uncertainty (that, px), so the
+    /// reference cannot tell how small it is.
+    BelowUncertainty(f64),
+    /// Its largest error before the horizon, px.
+    Error(f64),
+}
+
+impl Standing {
+    /// The standing of a method of `role` that strayed as `stray`, after `seen` frames of a
+    /// scene (`chaotic` when its balls collide), against a reference trusted as `trust`.
+    pub fn of(role: Role, stray: &Stray, trust: Trust, chaotic: bool, seen: u32) -> Standing {
+        if role == Role::Reference {
+            return Standing::Reference;
+        }
+        if let (true, Some(frame)) = (chaotic, stray.parted_at) {
+            return Standing::Parted(frame);
+        }
+        if !trust.tells(chaotic, seen) {
+            return Standing::AsFarAsKnown(trust.horizon);
+        }
+        if stray.max_error < trust.uncertainty {
+            return Standing::BelowUncertainty(trust.uncertainty);
+        }
+        Standing::Error(stray.max_error)
+    }
+
+    /// Whether it is the reference's own method or a method judged against it.
+    pub fn role(self) -> Role {
+        match self {
+            Standing::Reference => Role::Reference,
+            _ => Role::Method,
         }
     }
 }

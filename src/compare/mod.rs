@@ -4,6 +4,7 @@
 //! - [`methods`]: the methods, as `--methods` spells them (`rk4:4:exact`).
 //! - [`checks`]: what stops a comparison midway (a signal, numbers beyond the finite).
 //! - [`reference`]: what every method is measured against, and how far it converged.
+//! - [`estimate`]: how long the whole comparison will take, predicted before any work.
 //! - [`measure`]: the time per ball-frame, the error against the reference, the energy.
 //! - [`draw`]: the GIF's frames: every method in its colour, the reference as outlines, the
 //!   legend strip with each method's error so far.
@@ -16,6 +17,7 @@
 
 pub mod checks;
 pub mod draw;
+pub mod estimate;
 pub mod measure;
 pub mod methods;
 pub mod plot;
@@ -24,8 +26,8 @@ pub mod table;
 
 use std::io::Write;
 
-use crate::budget::Estimate;
-use crate::job::{Files, Job, Role, RunError, Summary};
+use crate::budget::{Budget, Estimate};
+use crate::job::{Files, Job, OutputKind, RunError, Summary};
 use crate::output::OutputError;
 use crate::physics::{Ball, Simulation};
 use crate::plot::Format;
@@ -33,7 +35,7 @@ use crate::scene::{InvalidValue, Scene};
 
 use checks::{balls_and_frames, check_finite};
 use draw::{LegendRow, Picture};
-use measure::{Energy, Outcome, Stray};
+use measure::{Energy, Outcome, Role, Standing, Stray, Trust};
 use methods::Method;
 use reference::Reference;
 
@@ -80,43 +82,51 @@ fn check_size(scene: &Scene) -> Result<(), InvalidValue> {
 pub fn compare(scene: &Scene, methods: &[Method], job: &Job) -> Result<Comparison, RunError> {
     scene.validate()?;
     check_size(scene)?;
+    // Each method's memory and GIF size; the time is the whole comparison's, checked next.
+    let each = Budget {
+        seconds: f64::INFINITY,
+        ..job.budget
+    };
     for method in methods {
-        Estimate::within(&method.on(scene), &job.budget)?;
+        Estimate::within(&method.on(scene), &each)?;
     }
+    estimate::check(scene, methods, &job.budget)?;
     job.check()?;
-    let plot_format = job.path(Role::Plot).map(Format::of).transpose()?;
+    let plot_format = job.path(OutputKind::Plot).map(Format::of).transpose()?;
     let files = job.open(&[])?;
 
     let bare = without_trails(scene);
-    let reference = Reference::of(&bare, job)?;
+    let reference = Reference::of(&bare, methods, job)?;
     let (strays, ends) = animate(scene, methods, job, &reference, &files)?;
     let timings = measure::time_all(&bare, methods);
-    let drifts = energy_drifts(scene, &reference, &ends);
+    let roles: Vec<Role> = methods.iter().map(|&m| reference.role(m)).collect();
+    let drifts = energy_drifts(scene, &reference, &ends, &roles);
+    let (chaotic, trust) = (chaotic(scene), reference.trust(scene.frames));
     let outcomes: Vec<Outcome> = (0..methods.len())
         .map(|k| Outcome {
             method: methods[k],
             timing: timings[k],
+            standing: Standing::of(roles[k], &strays[k], trust, chaotic, scene.frames),
             stray: strays[k].clone(),
             energy_drift: drifts[k],
         })
         .collect();
 
-    let chaotic = chaotic(scene);
     let conserves = measure::conserves_energy(scene);
-    let table = table::text(&reference.describe(), &outcomes, chaotic, conserves);
+    let table = table::text(
+        &reference.describe(),
+        &outcomes,
+        chaotic,
+        conserves,
+        trust,
+        scene.frames,
+    );
     let title = format!(
         "work against precision: {} · reference {}",
         balls_and_frames(scene),
         reference.method
     );
-    write_table_and_plot(
-        &files,
-        &outcomes,
-        chaotic,
-        scene.frames,
-        plot_format,
-        &title,
-    )?;
+    write_table_and_plot(&files, &outcomes, chaotic, trust, plot_format, &title)?;
     let summary = job.commit(files, scene.frames)?;
     Ok(Comparison {
         outcomes,
@@ -135,39 +145,27 @@ fn without_trails(scene: &Scene) -> Scene {
 }
 
 /// Each method's energy drift, given its balls in the last frame (`ends`): against the
-/// first frame's energy if the scene keeps its energy, else against the reference's.
-fn energy_drifts(scene: &Scene, reference: &Reference, ends: &[Vec<Ball>]) -> Vec<Option<f64>> {
+/// first frame's energy if the scene keeps its energy, else against the reference's, which
+/// needs a reference trusted to the last frame and says nothing of the reference's own method.
+fn energy_drifts(
+    scene: &Scene,
+    reference: &Reference,
+    ends: &[Vec<Ball>],
+    roles: &[Role],
+) -> Vec<Option<f64>> {
     let energy = Energy::new(scene);
     let start = energy.of(scene.simulation().balls());
-    let target = if measure::conserves_energy(scene) {
+    let conserves = measure::conserves_energy(scene);
+    let target = if conserves {
         start
     } else {
         energy.of(&reference.trajectory.last)
     };
+    let judged = |role| conserves || (role == Role::Method && reference.horizon >= scene.frames);
     let drift = |balls: &Vec<Ball>| (energy.of(balls) - target) / start.abs();
     ends.iter()
-        .map(|balls| Some(drift(balls)).filter(|d| d.is_finite()))
-        .collect()
-}
-
-/// What the legend says of a method so far.
-fn status(stray: &Stray, chaotic: bool) -> String {
-    match stray.parted_at {
-        Some(frame) if chaotic => format!("parted at frame {frame}"),
-        _ => format!("error {} px", table::short(stray.max_error)),
-    }
-}
-
-/// The longest texts a legend row of `method` can show, for the picture's width.
-fn widest_rows(methods: &[Method], frames: u32) -> Vec<String> {
-    let statuses = [
-        "error 8888.88 px".to_string(),
-        "error 8.8e-88 px".to_string(),
-        format!("parted at frame {frames}"),
-    ];
-    methods
-        .iter()
-        .flat_map(|m| statuses.iter().map(move |s| format!("{m}  {s}")))
+        .zip(roles)
+        .map(|(balls, &role)| Some(drift(balls)).filter(|d| d.is_finite() && judged(role)))
         .collect()
 }
 
@@ -181,15 +179,15 @@ fn animate(
     reference: &Reference,
     files: &Files,
 ) -> Result<(Vec<Stray>, Vec<Vec<Ball>>), RunError> {
-    let chaotic = chaotic(scene);
-    let reference_row = format!("reference {} (outlines)", reference.method);
-    let mut widest = widest_rows(methods, scene.frames);
+    let (chaotic, trust) = (chaotic(scene), reference.trust(scene.frames));
+    let reference_row = draw::reference_row(reference.method, trust, scene.frames);
+    let mut widest = draw::widest_rows(methods, trust, chaotic, scene.frames);
     widest.push(reference_row.clone());
     let mut picture = Picture::new(scene, methods.len(), reference_row, &widest)?;
     let mut gif = files.start_gif(picture.size(), picture.palette(), scene.frame_ms)?;
     let mut simulations: Vec<Simulation> =
         methods.iter().map(|m| m.on(scene).simulation()).collect();
-    let mut strays = vec![Stray::default(); methods.len()];
+    let mut strays = vec![Stray::until(reference.horizon); methods.len()];
     job.progress().add_frames(scene.frames);
     for n in 0..scene.frames {
         job.stop_if_asked(n, scene.frames)?;
@@ -202,9 +200,10 @@ fn animate(
         let legend: Vec<LegendRow> = methods
             .iter()
             .zip(&strays)
-            .map(|(method, stray)| LegendRow {
-                label: method.to_string(),
-                status: status(stray, chaotic),
+            .map(|(&method, stray)| {
+                let trust = reference.trust(n + 1);
+                let standing = Standing::of(reference.role(method), stray, trust, chaotic, n + 1);
+                LegendRow::new(method, standing)
             })
             .collect();
         let balls: Vec<&[Ball]> = simulations.iter().map(Simulation::balls).collect();
@@ -222,17 +221,18 @@ fn write_table_and_plot(
     files: &Files,
     outcomes: &[Outcome],
     chaotic: bool,
-    frames: u32,
+    trust: Trust,
     format: Option<Format>,
     title: &str,
 ) -> Result<(), OutputError> {
-    if let Some(out) = files.writer(Role::Table)? {
-        table::write_csv(out, outcomes, chaotic).map_err(files.error_at(Role::Table))?;
+    if let Some(out) = files.writer(OutputKind::Table)? {
+        table::write_csv(out, outcomes, chaotic, trust)
+            .map_err(files.error_at(OutputKind::Table))?;
     }
-    if let (Some(mut out), Some(format)) = (files.writer(Role::Plot)?, format) {
-        plot::write(&mut out, format, outcomes, chaotic, frames, title)
+    if let (Some(mut out), Some(format)) = (files.writer(OutputKind::Plot)?, format) {
+        plot::write(&mut out, format, outcomes, chaotic, trust, title)
             .and_then(|()| out.flush())
-            .map_err(files.error_at(Role::Plot))?;
+            .map_err(files.error_at(OutputKind::Plot))?;
     }
     Ok(())
 }

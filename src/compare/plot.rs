@@ -1,6 +1,7 @@
 //! The work-precision diagram (`--plot`): each method's error against its time per
 //! ball-frame, both on log scales, one point per method in its GIF colour with its min–max
-//! timing as a bar, and the lesson's point ringed. Down and to the left is better: cheaper
+//! timing as a bar, and the lesson's point ringed; a grey line where the reference stops
+//! telling (its uncertainty, or its horizon). Down and to the left is better: cheaper
 //! and closer to the reference. SVG, or PNG for a path ending in `.png`, with the `--plot`
 //! picture's font and look ([`crate::plot`]).
 
@@ -13,7 +14,7 @@ use crate::physics::maths;
 use crate::plot::{use_embedded_font, write_png, Format};
 
 use super::draw::COLOURS;
-use super::measure::Outcome;
+use super::measure::{Outcome, Role, Trust};
 use super::methods::LESSON;
 
 /// The picture's size, px.
@@ -23,13 +24,21 @@ const SIZE: (u32, u32) = (800, 560);
 const FLOOR_ERROR: f64 = 1e-13;
 
 /// What the vertical axis shows: the largest error, or, for balls that part chaotically,
-/// how many frames a method stays within a radius of the reference.
-fn value(outcome: &Outcome, chaotic: bool, frames: u32) -> f64 {
+/// how many frames a method stays within a radius of the reference (at most its `horizon`,
+/// past which the reference cannot tell).
+fn value(outcome: &Outcome, chaotic: bool, horizon: u32) -> f64 {
     if chaotic {
-        f64::from(outcome.stray.parted_at.unwrap_or(frames).max(1))
+        f64::from(outcome.stray.parted_at.unwrap_or(horizon).max(1))
     } else {
         outcome.stray.max_error.max(FLOOR_ERROR)
     }
+}
+
+/// The outcomes the plot shows, each with its place in `--methods` (for its colour): every
+/// method but the reference's own, which is not judged.
+fn judged(outcomes: &[Outcome]) -> impl Iterator<Item = (usize, &Outcome)> {
+    let judged = |(_, o): &(usize, &Outcome)| o.standing.role() == Role::Method;
+    outcomes.iter().enumerate().filter(judged)
 }
 
 /// A range around `values` for a log axis: from half the smallest to `above` times the
@@ -39,7 +48,10 @@ fn log_range(values: impl Iterator<Item = f64>, above: f64) -> std::ops::Range<f
         (lo.min(v), hi.max(v))
     });
     let (low, high) = (low / 2.0, high * above);
-    if high < low * 10.0 {
+    if low > high {
+        // No values (every method is the reference's own): any range will do.
+        1.0..10.0
+    } else if high < low * 10.0 {
         low / 3.0..high * 3.0
     } else {
         low..high
@@ -77,22 +89,33 @@ fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     outcomes: &[Outcome],
     chaotic: bool,
-    frames: u32,
+    trust: Trust,
     title: &str,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     root.fill(&WHITE)?;
+    let horizon = trust.horizon;
+    // The line past which the reference tells no more: its uncertainty, under which errors
+    // are not resolved, or for colliding balls its horizon, which no method can pass.
+    let (limit, limit_name) = if chaotic {
+        (f64::from(horizon.max(1)), "the reference's horizon")
+    } else {
+        let uncertainty = trust.uncertainty.max(FLOOR_ERROR);
+        (uncertainty, "the reference's uncertainty")
+    };
+    let limit = Some(limit).filter(|l| l.is_finite());
     let x_range = log_range(
         outcomes.iter().flat_map(|o| [o.timing.min, o.timing.max]),
         2.0,
     );
     // Room above for the lesson's ring, drawn 13 px around its point.
-    let y_range = log_range(outcomes.iter().map(|o| value(o, chaotic, frames)), 4.0);
+    let values = judged(outcomes).map(|(_, o)| value(o, chaotic, horizon));
+    let y_range = log_range(values.chain(limit), 4.0);
     let mut chart = ChartBuilder::on(root)
         .margin(16)
         .caption(title, ("sans-serif", 17))
         .x_label_area_size(44)
         .y_label_area_size(80)
-        .build_cartesian_2d(x_range.log_scale(), y_range.log_scale())?;
+        .build_cartesian_2d(x_range.clone().log_scale(), y_range.log_scale())?;
     let y_desc = if chaotic {
         "frames before a ball is more than a radius off (higher is better)"
     } else {
@@ -111,10 +134,18 @@ fn draw<DB: DrawingBackend>(
         .max_light_lines(0)
         .bold_line_style(RGBColor(230, 230, 230))
         .draw()?;
-    for (k, outcome) in outcomes.iter().enumerate() {
+    if let Some(y) = limit {
+        let grey = RGBColor(150, 150, 150);
+        let across = vec![(x_range.start, y), (x_range.end, y)];
+        chart
+            .draw_series([PathElement::new(across, grey.stroke_width(2))])?
+            .label(limit_name)
+            .legend(move |(x, y)| PathElement::new(vec![(x - 6, y), (x + 6, y)], grey));
+    }
+    for (k, outcome) in judged(outcomes) {
         let [r, g, b] = COLOURS[k];
         let colour = RGBColor(r, g, b);
-        let y = value(outcome, chaotic, frames);
+        let y = value(outcome, chaotic, horizon);
         let (x, timing) = (outcome.timing.median, &outcome.timing);
         chart.draw_series([PathElement::new(
             vec![(timing.min, y), (timing.max, y)],
@@ -152,7 +183,7 @@ pub fn write(
     format: Format,
     outcomes: &[Outcome],
     chaotic: bool,
-    frames: u32,
+    trust: Trust,
     title: &str,
 ) -> io::Result<()> {
     use_embedded_font()?;
@@ -161,13 +192,13 @@ pub fn write(
             let mut text = String::new();
             {
                 let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
-                draw(&root, outcomes, chaotic, frames, title).map_err(io::Error::other)?;
+                draw(&root, outcomes, chaotic, trust, title).map_err(io::Error::other)?;
             }
             let mut out = out;
             out.write_all(text.as_bytes())
         }
         Format::Png => write_png(out, SIZE, |root| {
-            draw(root, outcomes, chaotic, frames, title)
+            draw(root, outcomes, chaotic, trust, title)
         }),
     }
 }

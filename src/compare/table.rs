@@ -1,14 +1,16 @@
 //! The comparison as a table: aligned on standard output, and as CSV for `--table`, one row
-//! per method. Above the table, which reference the errors are measured against and how far
-//! it converged; below it, what the energy column means for this scene.
+//! per method. Above the table, which reference the errors are measured against, how far it
+//! converged and up to which frame it is trusted; below it, what the energy column means for
+//! this scene.
 
 use std::io::{self, Write};
 
-use super::measure::Outcome;
+use super::measure::{Outcome, Standing, Trust};
 
 /// The CSV's columns; a value the scene makes meaningless is left empty (the position error
-/// of colliding balls, which part chaotically; a parting that never happened).
-pub const CSV_HEADER: &str = "method,ns_per_ball_frame,ns_per_ball_frame_min,ns_per_ball_frame_max,max_position_error_px,parted_at_frame,energy_drift";
+/// of colliding balls, which part chaotically, or of the reference's own method; a parting
+/// that never happened). The last three were added later, so older readers still work.
+pub const CSV_HEADER: &str = "method,ns_per_ball_frame,ns_per_ball_frame_min,ns_per_ball_frame_max,max_position_error_px,parted_at_frame,energy_drift,role,reference_uncertainty_px,reference_horizon_frame";
 
 /// What the energy column means, for the line under the table.
 fn energy_meaning(conserves: bool) -> &'static str {
@@ -30,38 +32,57 @@ pub fn short(value: f64) -> String {
     }
 }
 
+/// What the table says of a method against the reference.
+fn judgement(standing: Standing, chaotic: bool) -> String {
+    match standing {
+        Standing::Reference => "the reference (not judged)".to_string(),
+        Standing::Parted(frame) => format!("parted at frame {frame}"),
+        Standing::AsFarAsKnown(horizon) => {
+            format!("agrees with the reference as far as the reference can tell (frame {horizon})")
+        }
+        Standing::BelowUncertainty(uncertainty) => {
+            format!(
+                "below the reference's uncertainty ({} px)",
+                short(uncertainty)
+            )
+        }
+        Standing::Error(error) if chaotic => format!("within a radius ({} px)", short(error)),
+        Standing::Error(error) => short(error),
+    }
+}
+
 /// One row's cells as the terminal shows them.
 fn cells(outcome: &Outcome, chaotic: bool) -> [String; 4] {
     let timing = &outcome.timing;
-    let error = if chaotic {
-        match outcome.stray.parted_at {
-            Some(frame) => format!("parted at frame {frame}"),
-            None => format!("within a radius ({} px)", short(outcome.stray.max_error)),
-        }
-    } else {
-        short(outcome.stray.max_error)
-    };
     [
         outcome.method.to_string(),
         format!("{:.1} ({:.1}–{:.1})", timing.median, timing.min, timing.max),
-        error,
+        judgement(outcome.standing, chaotic),
         outcome
             .energy_drift
             .map_or("–".to_string(), |d| format!("{d:+.1e}")),
     ]
 }
 
-/// The table as the terminal shows it, every line ending in a newline.
-pub fn text(reference: &str, outcomes: &[Outcome], chaotic: bool, conserves: bool) -> String {
-    let error_title = if chaotic {
-        "first more than a radius off (balls collide: chaotic)"
-    } else {
-        "largest position error, px"
+/// The table as the terminal shows it, every line ending in a newline: the `reference`'s
+/// lines, then a row per method, over `frames` frames.
+pub fn text(
+    reference: &[String],
+    outcomes: &[Outcome],
+    chaotic: bool,
+    conserves: bool,
+    trust: Trust,
+    frames: u32,
+) -> String {
+    let error_title = match (chaotic, trust.horizon < frames) {
+        (true, _) => "first more than a radius off (balls collide: chaotic)".to_string(),
+        (false, false) => "largest position error, px".to_string(),
+        (false, true) => format!("largest position error before frame {}, px", trust.horizon),
     };
     let head = [
         "method".to_string(),
         "ns per ball-frame (min–max)".to_string(),
-        error_title.to_string(),
+        error_title,
         "energy drift".to_string(),
     ];
     let rows: Vec<[String; 4]> = std::iter::once(head)
@@ -69,7 +90,7 @@ pub fn text(reference: &str, outcomes: &[Outcome], chaotic: bool, conserves: boo
         .collect();
     let width = |c: usize| rows.iter().map(|r| r[c].chars().count()).max().unwrap_or(0);
     let widths = [width(0), width(1), width(2), width(3)];
-    let mut out = format!("reference: {reference}\n");
+    let mut out = format!("reference: {}\n", reference.join("\n  "));
     for row in &rows {
         let line = format!(
             "{:<w0$}  {:>w1$}  {:>w2$}  {:>w3$}",
@@ -86,19 +107,35 @@ pub fn text(reference: &str, outcomes: &[Outcome], chaotic: bool, conserves: boo
         out.push('\n');
     }
     out += energy_meaning(conserves);
+    if !conserves && trust.horizon < frames {
+        out += &format!(
+            "; left out here: the reference is trusted only up to frame {}",
+            trust.horizon
+        );
+    }
     out.push('\n');
     out
 }
 
 /// The table as CSV: [`CSV_HEADER`], then a row per method.
-pub fn write_csv(mut out: impl Write, outcomes: &[Outcome], chaotic: bool) -> io::Result<()> {
+pub fn write_csv(
+    mut out: impl Write,
+    outcomes: &[Outcome],
+    chaotic: bool,
+    trust: Trust,
+) -> io::Result<()> {
     writeln!(out, "{CSV_HEADER}")?;
     for outcome in outcomes {
         let timing = &outcome.timing;
-        let error = if chaotic {
-            String::new()
-        } else {
-            format!("{:e}", outcome.stray.max_error)
+        // No error for the reference's own method, nor where no frame was measured (a
+        // reference trusted in none).
+        let measured = match outcome.standing {
+            Standing::Reference | Standing::AsFarAsKnown(0) => false,
+            _ => !chaotic,
+        };
+        let error = match measured {
+            true => format!("{:e}", outcome.stray.max_error),
+            false => String::new(),
         };
         let parted = outcome
             .stray
@@ -109,8 +146,14 @@ pub fn write_csv(mut out: impl Write, outcomes: &[Outcome], chaotic: bool) -> io
             .map_or(String::new(), |d| format!("{d:e}"));
         writeln!(
             out,
-            "{},{:.2},{:.2},{:.2},{error},{parted},{energy}",
-            outcome.method, timing.median, timing.min, timing.max
+            "{},{:.2},{:.2},{:.2},{error},{parted},{energy},{},{:e},{}",
+            outcome.method,
+            timing.median,
+            timing.min,
+            timing.max,
+            outcome.standing.role().name(),
+            trust.uncertainty,
+            trust.horizon
         )?;
     }
     out.flush()

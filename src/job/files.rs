@@ -13,7 +13,7 @@ use crate::render::palette::{IndexedFrame, Palette};
 use crate::render::write_png;
 use crate::render::Damage;
 
-use super::outputs::{Role, Target};
+use super::outputs::{OutputKind, Target};
 
 /// Where an output's bytes go while the job runs.
 pub type Writer = BufWriter<Box<dyn Write>>;
@@ -27,7 +27,7 @@ pub struct Files {
 
 /// One open output.
 struct Open {
-    role: Role,
+    kind: OutputKind,
     path: PathBuf,
     /// `None` for standard output, which is written as the job goes.
     file: Option<AtomicFile>,
@@ -42,7 +42,7 @@ impl Files {
                 false => Some(AtomicFile::create(&target.path)?),
             };
             Ok(Open {
-                role: target.role,
+                kind: target.kind,
                 path: target.path.clone(),
                 file,
             })
@@ -53,10 +53,10 @@ impl Files {
         })
     }
 
-    /// A writer onto the output of `role`, if the job has one: a second handle on its
+    /// A writer onto the output of `kind`, if the job has one: a second handle on its
     /// temporary file (so writing it borrows nothing), or standard output.
-    pub fn writer(&self, role: Role) -> Result<Option<Writer>, OutputError> {
-        let Some(open) = self.open.iter().find(|o| o.role == role) else {
+    pub fn writer(&self, kind: OutputKind) -> Result<Option<Writer>, OutputError> {
+        let Some(open) = self.open.iter().find(|o| o.kind == kind) else {
             return Ok(None);
         };
         let out: Box<dyn Write> = match &open.file {
@@ -66,15 +66,15 @@ impl Files {
         Ok(Some(BufWriter::new(out)))
     }
 
-    /// Ties an I/O failure to the output of `role`.
-    pub fn error_at(&self, role: Role) -> impl Fn(io::Error) -> OutputError + '_ {
-        OutputError::at(self.path(role))
+    /// Ties an I/O failure to the output of `kind`.
+    pub fn error_at(&self, kind: OutputKind) -> impl Fn(io::Error) -> OutputError + '_ {
+        OutputError::at(self.path(kind))
     }
 
-    /// Where the output of `role` goes (its flag, for one the job does not write).
-    fn path(&self, role: Role) -> &Path {
-        let open = self.open.iter().find(|o| o.role == role);
-        open.map_or(Path::new(role.flag()), |o| &o.path)
+    /// Where the output of `kind` goes (its flag, for one the job does not write).
+    fn path(&self, kind: OutputKind) -> &Path {
+        let open = self.open.iter().find(|o| o.kind == kind);
+        open.map_or(Path::new(kind.flag()), |o| &o.path)
     }
 
     /// Starts the GIF (its header and colour table), `width` × `height` px, each frame shown
@@ -85,15 +85,15 @@ impl Files {
         palette: &Palette,
         frame_ms: u32,
     ) -> Result<Gif, OutputError> {
-        let error = self.error_at(Role::Gif);
-        let writer = match self.writer(Role::Gif)? {
+        let error = self.error_at(OutputKind::Gif);
+        let writer = match self.writer(OutputKind::Gif)? {
             Some(out) => Some(
                 GifWriter::new(out, width as u16, height as u16, palette, frame_ms)
                     .map_err(&error)?,
             ),
             None => None,
         };
-        let path = self.path(Role::Gif).to_path_buf();
+        let path = self.path(OutputKind::Gif).to_path_buf();
         Ok(Gif { writer, path })
     }
 
@@ -110,10 +110,10 @@ impl Files {
         if let Some(writer) = gif.writer.as_mut() {
             writer.send_queued().map_err(&gif_error)?;
         }
-        if let Some(mut png) = self.writer(Role::Png)? {
+        if let Some(mut png) = self.writer(OutputKind::Png)? {
             write_png(&mut png, still, palette)
                 .and_then(|()| png.flush())
-                .map_err(self.error_at(Role::Png))?;
+                .map_err(self.error_at(OutputKind::Png))?;
         }
         if let Some(writer) = gif.writer {
             self.pictures.set(Some(writer.pictures()));

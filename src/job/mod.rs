@@ -12,7 +12,7 @@
 //!
 //! The commands are peers above it: none imports another.
 //!
-//! - [`outputs`]: what each output is ([`Role`]) and where it goes ([`Target`]).
+//! - [`outputs`]: what each output is ([`OutputKind`]) and where it goes ([`Target`]).
 //! - [`files`]: the open outputs, written beside their targets and committed together.
 //! - [`error`]: why a job wrote nothing ([`RunError`]), with its exit code.
 
@@ -30,7 +30,7 @@ use crate::stop::Stop;
 
 pub use error::RunError;
 pub use files::Files;
-pub use outputs::{Role, Target};
+pub use outputs::{OutputKind, Target};
 
 /// One command's run: its outputs and the limits it runs within.
 pub struct Job {
@@ -93,21 +93,23 @@ impl Job {
 
     /// A job that writes a GIF and its still: what the main command writes by default.
     pub fn pictures(gif: impl Into<PathBuf>, png: impl Into<PathBuf>) -> Job {
-        Job::new().with(Role::Gif, gif).with(Role::Png, png)
+        Job::new()
+            .with(OutputKind::Gif, gif)
+            .with(OutputKind::Png, png)
     }
 
     /// The job with one more output.
-    pub fn with(mut self, role: Role, path: impl Into<PathBuf>) -> Job {
+    pub fn with(mut self, kind: OutputKind, path: impl Into<PathBuf>) -> Job {
         self.outputs.push(Target {
-            role,
+            kind,
             path: path.into(),
         });
         self
     }
 
-    /// Where the output of this role goes, if the job writes one.
-    pub fn path(&self, role: Role) -> Option<&Path> {
-        let target = self.outputs.iter().find(|t| t.role == role);
+    /// Where the output of this kind goes, if the job writes one.
+    pub fn path(&self, kind: OutputKind) -> Option<&Path> {
+        let target = self.outputs.iter().find(|t| t.kind == kind);
         target.map(|t| t.path.as_path())
     }
 

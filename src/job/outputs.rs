@@ -1,4 +1,4 @@
-//! A job's outputs: what each is ([`Role`], which fixes its flag and what path it may take)
+//! A job's outputs: what each is ([`OutputKind`], which fixes its flag and what path it may take)
 //! and where it goes ([`Target`]).
 
 use std::path::PathBuf;
@@ -8,7 +8,7 @@ use crate::output::Output;
 /// What an output is, which fixes its flag and what it may be: a picture whose format the
 /// flag fixes, a stream that may go to standard output, or a file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Role {
+pub enum OutputKind {
     Gif,
     Png,
     Trace,
@@ -16,15 +16,15 @@ pub enum Role {
     Table,
 }
 
-impl Role {
+impl OutputKind {
     /// The flag that names this output.
     pub fn flag(self) -> &'static str {
         match self {
-            Role::Gif => "--gif",
-            Role::Png => "--png",
-            Role::Trace => "--trace",
-            Role::Plot => "--plot",
-            Role::Table => "--table",
+            OutputKind::Gif => "--gif",
+            OutputKind::Png => "--png",
+            OutputKind::Trace => "--trace",
+            OutputKind::Plot => "--plot",
+            OutputKind::Table => "--table",
         }
     }
 }
@@ -32,19 +32,19 @@ impl Role {
 /// One output of a job: what it is and where it goes.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Target {
-    pub role: Role,
+    pub kind: OutputKind,
     pub path: PathBuf,
 }
 
 impl Target {
     /// This output as [`crate::output::check`] judges it.
     pub fn output(&self) -> Output<'_> {
-        let (flag, path) = (self.role.flag(), self.path.as_path());
-        match self.role {
-            Role::Gif => Output::picture(flag, path, "gif"),
-            Role::Png => Output::picture(flag, path, "png"),
-            Role::Trace => Output::stream(flag, path),
-            Role::Plot | Role::Table => Output::file(flag, path),
+        let (flag, path) = (self.kind.flag(), self.path.as_path());
+        match self.kind {
+            OutputKind::Gif => Output::picture(flag, path, "gif"),
+            OutputKind::Png => Output::picture(flag, path, "png"),
+            OutputKind::Trace => Output::stream(flag, path),
+            OutputKind::Plot | OutputKind::Table => Output::file(flag, path),
         }
     }
 }

@@ -50,6 +50,10 @@ pub struct Grid {
 }
 
 impl Grid {
+    /// The grid's memory per ball, bytes: a 32-byte entry, its cell and up to 12 cell bounds
+    /// (the budget counts it before the run; `crate::budget`).
+    pub const BYTES_PER_BALL: u64 = 32 + 8 + 12 * 8;
+
     /// An empty grid; it allocates on the first `rebuild` and reuses its buffers afterwards.
     pub fn new() -> Grid {
         Grid::default()

@@ -36,6 +36,12 @@ pub struct Cells {
 }
 
 impl Cells {
+    /// Memory per ball, bytes: its cell's column and row, its place in the cell's list, and
+    /// up to `MAX_CELLS_PER_BALL` cells' list heads.
+    pub const BYTES_PER_BALL: u64 =
+        (size_of::<[usize; 2]>() + MAX_CELLS_PER_BALL as usize * size_of::<u32>()) as u64
+            + Lists::BYTES_PER_BALL;
+
     /// Lays a grid over the balls as they are now and over `area` (the box from the origin to
     /// this corner, if there is one: the balls will spread over it), and puts each ball in its
     /// cell.

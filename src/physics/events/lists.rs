@@ -17,6 +17,10 @@ pub struct Lists {
 }
 
 impl Lists {
+    /// Memory per ball, bytes: its list and its two neighbours in it. The lists' heads are
+    /// their owner's to count.
+    pub const BYTES_PER_BALL: u64 = 3 * size_of::<u32>() as u64;
+
     /// `lists` empty lists for `balls` balls.
     pub fn reset(&mut self, lists: usize, balls: usize) {
         self.head.clear();

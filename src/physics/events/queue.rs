@@ -74,6 +74,15 @@ pub struct Queue {
 }
 
 impl Queue {
+    /// Memory per ball, bytes: its next event and counter, its place in a day's list (one
+    /// day per ball), and its place in today's heap (whose buffer may grow to twice that).
+    pub const BYTES_PER_BALL: u64 = (size_of::<Event>()
+        + size_of::<u32>()
+        + size_of::<u32>()
+        + 2 * size_of::<(f64, u32)>()
+        + size_of::<u32>()) as u64
+        + Lists::BYTES_PER_BALL;
+
     /// A calendar of `balls` balls with nothing predicted, for a step `length` frames long,
     /// keeping the allocations.
     pub fn reset(&mut self, balls: usize, length: f64) {

@@ -114,6 +114,18 @@ struct Step<'a> {
 }
 
 impl EventDriven {
+    /// Exact mode's memory per ball, bytes, for the budget: the per-ball buffers of this
+    /// struct (clock, flight, predicted bounce and contact, supports, flags, last collision),
+    /// the calendar's and the grid's.
+    pub const BYTES_PER_BALL: u64 = (2 * size_of::<f64>()
+        + size_of::<Forces>()
+        + size_of::<Event>()
+        + size_of::<Option<Contact>>()
+        + size_of::<Support>()
+        + 2 * size_of::<bool>()) as u64
+        + Queue::BYTES_PER_BALL
+        + Cells::BYTES_PER_BALL;
+
     /// Exact contacts that keep `restitution` of the approach speed.
     pub fn new(restitution: f64) -> EventDriven {
         EventDriven {

@@ -1,0 +1,81 @@
+//! How long a comparison will take, predicted before any work, so that one over the time
+//! budget (`--time-budget`) is refused at once instead of after minutes.
+//!
+//! A comparison runs the physics of the scene many times: the reference's refinements, each
+//! method once to draw it, and each method again and again to time it. Each run is costed by
+//! [`physics_seconds`], the budget's prediction of a whole run from a pilot. Only the number of
+//! the reference's refinements cannot be known up front: it takes as many doublings as the
+//! scene needs to converge. A pilot finds out on the scene's first frames, and the whole run
+//! is assumed to need at least as many, and at least one doubling past the finest method,
+//! within the reference's work limit.
+
+use crate::budget::{physics_seconds, Budget, OverBudget};
+use crate::job::Job;
+use crate::scene::Scene;
+
+use super::measure::timing_seconds;
+use super::methods::Method;
+use super::reference::{most_substeps, rk4, Reference};
+use super::without_trails;
+
+/// The pilot of the reference's doubling runs on a prefix of the scene short enough to take
+/// about this long even if it doubles to the work limit, seconds (predicted).
+const PILOT_SECONDS: f64 = 0.2;
+
+/// The predicted seconds of comparing `methods` on a validated `scene`: the reference's runs,
+/// each method's drawn run and its timing runs (the drawing itself is not counted: next to
+/// the physics of many runs it is small).
+pub fn estimate_seconds(scene: &Scene, methods: &[Method]) -> f64 {
+    let bare = without_trails(scene);
+    let mut costs = Costs {
+        scene: &bare,
+        known: Vec::new(),
+    };
+    let first = costs.of(rk4(1));
+    let last = last_substeps(&bare, methods, first);
+    // Its refinements after the first: 2, 4, … up to the last.
+    let finer: f64 = (1..=last.ilog2()).map(|k| costs.of(rk4(1 << k))).sum();
+    let runs: Vec<f64> = methods.iter().map(|&m| costs.of(m)).collect();
+    first + finer + runs.iter().sum::<f64>() + timing_seconds(&runs)
+}
+
+/// The predicted seconds of runs of a scene, each method's costed once however often it is
+/// asked for (a listed method can be one of the reference's refinements): each costing runs
+/// a pilot.
+struct Costs<'a> {
+    scene: &'a Scene,
+    known: Vec<(Method, f64)>,
+}
+
+impl Costs<'_> {
+    fn of(&mut self, method: Method) -> f64 {
+        if let Some(&(_, seconds)) = self.known.iter().find(|(m, _)| *m == method) {
+            return seconds;
+        }
+        let seconds = physics_seconds(&method.on(self.scene));
+        self.known.push((method, seconds));
+        seconds
+    }
+}
+
+/// Refuses a comparison predicted to take longer than `budget` allows.
+pub fn check(scene: &Scene, methods: &[Method], budget: &Budget) -> Result<(), OverBudget> {
+    budget.check_seconds(estimate_seconds(scene, methods))
+}
+
+/// The substeps of the reference's last run on `scene`, from a pilot: the reference's own
+/// doubling on the scene's first frames, held to the whole scene's work limit. `first`, the
+/// predicted seconds of its first run on the whole scene, sizes the prefix, so that the pilot
+/// is short even if it doubles to the limit.
+fn last_substeps(scene: &Scene, methods: &[Method], first: f64) -> u32 {
+    let most = most_substeps(scene);
+    let share = PILOT_SECONDS / (f64::from(2 * most - 1) * first);
+    let frames = (f64::from(scene.frames) * share).clamp(1.0, f64::from(scene.frames)) as u32;
+    let prefix = Scene {
+        frames,
+        ..scene.clone()
+    };
+    // A pilot whose balls leave the finite numbers foretells a refused run; count the most.
+    Reference::refined(&prefix, methods, most, &Job::new())
+        .map_or(most, |pilot| pilot.method.substeps)
+}
