@@ -314,8 +314,7 @@ impl AtomicFile {
             .prefix(&format!(".{name}."))
             .suffix(".tmp")
             .tempfile_in(folder)
-            // The error names the hidden temporary file; the user knows only their path.
-            .map_err(|error| OutputError::at(path)(io::Error::from(error.kind())))?;
+            .map_err(|error| OutputError::at(path)(cannot_create_in(folder, error)))?;
         Ok(AtomicFile {
             temp,
             target,
@@ -353,6 +352,24 @@ impl AtomicFile {
             .map_err(|e| at(explain_rename(e.error)))?;
         Ok(())
     }
+}
+
+/// Why no file can be made in `folder`, in the user's terms: the system's own error names
+/// the hidden temporary file, which the user never asked for.
+fn cannot_create_in(folder: &Path, error: io::Error) -> io::Error {
+    let text = error.to_string();
+    let system = text
+        .rsplit_once(" at path ")
+        .map_or(text.as_str(), |(said, _)| said);
+    let folder = folder.display();
+    let why = match error.kind() {
+        io::ErrorKind::PermissionDenied => {
+            format!("permission denied (this user may not make files in {folder})")
+        }
+        io::ErrorKind::NotFound => format!("{folder} takes no new files ({system})"),
+        _ => system.to_string(),
+    };
+    io::Error::new(error.kind(), why)
 }
 
 /// Whether the owner may not write this file: the write bit clear on Unix (root too, who

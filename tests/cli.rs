@@ -647,3 +647,17 @@ fn a_spawn_without_colours_takes_the_lessons() {
         "three balls in the lesson's yellow: {lesson_ball} px"
     );
 }
+
+#[test]
+fn the_trace_writes_the_shortest_number_that_reads_back_with_an_exponent_only_when_long() {
+    let dir = temp_dir();
+    let output = run_in(
+        dir.path(),
+        &["--vx", "1e-20", "--y", "100.5", "-n", "1", "--trace", "-"],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    let trace = String::from_utf8_lossy(&output.stdout);
+    let row = trace.lines().nth(1).expect("a row after the header");
+    // x moves by 1e-20 from 40 (lost to rounding), vx stays tiny, y and vy are plain.
+    assert_eq!(row, "0,0,40,101,1e-20,0.5", "the trace row");
+}

@@ -234,7 +234,7 @@ fn an_unknown_key_is_named_with_the_file_and_line() {
     let err = parse_error(&format!("{GOOD_HEAD}gravty = [0.0, 0.5]\n"));
     assert!(
         err.starts_with(
-            "bad.toml: line 3: unknown key `gravty`; the keys allowed here are `width`"
+            "bad.toml: line 3: unknown key `gravty`; did you mean `gravity`?; the keys allowed here are `width`"
         ),
         "{err}"
     );

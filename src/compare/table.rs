@@ -5,6 +5,8 @@
 
 use std::io::{self, Write};
 
+use crate::trace::number;
+
 use super::measure::{Outcome, Standing, Trust};
 
 /// The CSV's columns; a value the scene makes meaningless is left empty (the position error
@@ -134,25 +136,23 @@ pub fn write_csv(
             _ => !chaotic,
         };
         let error = match measured {
-            true => format!("{:e}", outcome.stray.max_error),
+            true => number(outcome.stray.max_error),
             false => String::new(),
         };
         let parted = outcome
             .stray
             .parted_at
             .map_or(String::new(), |f| f.to_string());
-        let energy = outcome
-            .energy_drift
-            .map_or(String::new(), |d| format!("{d:e}"));
+        let energy = outcome.energy_drift.map_or(String::new(), number);
         writeln!(
             out,
-            "{},{:.2},{:.2},{:.2},{error},{parted},{energy},{},{:e},{}",
+            "{},{:.2},{:.2},{:.2},{error},{parted},{energy},{},{},{}",
             outcome.method,
             timing.median,
             timing.min,
             timing.max,
             outcome.standing.role().name(),
-            trust.uncertainty,
+            number(trust.uncertainty),
             trust.horizon
         )?;
     }

@@ -117,7 +117,12 @@ pub fn load_on(path: &Path, seed: u64, canvas: Canvas) -> Result<Scene, SceneFil
     // Windows editors (Notepad among them) may begin UTF-8 with a byte-order mark; TOML has
     // no place for one. Line endings need nothing: TOML takes CRLF as it takes LF.
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
-    parse_on(&file, text, seed, canvas)
+    let scene = parse_on(&file, text, seed, canvas)?;
+    // An empty animation is never what a scene file run meant.
+    match scene.balls.is_empty() {
+        true => Err(SceneFileError::NoBalls { file }),
+        false => Ok(scene),
+    }
 }
 
 /// Loads a bundled preset by name.
@@ -171,12 +176,6 @@ fn parse_on(file: &str, text: &str, seed: u64, canvas: Canvas) -> Result<Scene, 
     };
     let scene = raw.on(canvas).into_scene(seed).map_err(invalid)?;
     scene.validate().map_err(invalid)?;
-    // An empty animation is never what a scene file meant.
-    if scene.balls.is_empty() {
-        return Err(SceneFileError::NoBalls {
-            file: file.to_string(),
-        });
-    }
     Ok(scene)
 }
 
