@@ -255,3 +255,62 @@ fn the_readme_answers_the_reflection_questions_with_the_programs_numbers() {
         steps[steps.len() - 1]
     ));
 }
+
+/// The TOML example of the scene-file page, as written.
+fn scene_file_example() -> String {
+    let page = doc("scene-files.md");
+    let start = page.find("```toml\n").expect("a TOML example") + "```toml\n".len();
+    let end = start + page[start..].find("```").expect("the example's end");
+    page[start..end].to_string()
+}
+
+#[test]
+fn the_scene_file_example_spawns_every_ball_above_its_slope() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("example.toml"), scene_file_example()).unwrap();
+    let output = common::run_in(
+        dir.path(),
+        &[
+            "--scene",
+            "example.toml",
+            "-n",
+            "1",
+            "--trace",
+            "t.csv",
+            "-q",
+        ],
+    );
+    assert!(output.status.success(), "{}", common::stderr(&output));
+    let scene = scene_file::load(&dir.path().join("example.toml"), 1).unwrap();
+    let slope = scene.floors[0];
+    let rows = common::trace_rows(&dir.path().join("t.csv"));
+    assert_eq!(
+        rows.len(),
+        scene.balls.len(),
+        "one row a ball after the first frame"
+    );
+    for (row, ball) in rows.iter().zip(&scene.balls) {
+        let [_, i, x, y, _, _] = *row;
+        let surface = slope.from.y
+            + (slope.to.y - slope.from.y) * (x - slope.from.x) / (slope.to.x - slope.from.x);
+        assert!(
+            y + ball.radius <= surface,
+            "ball {i} starts at y {y} with radius {}, the slope's surface there is at y {surface}",
+            ball.radius
+        );
+    }
+}
+
+#[test]
+fn a_spawn_the_floors_leave_no_room_for_is_refused() {
+    let text = "width = 200\nheight = 200\nball_collisions = { restitution = 1.0 }\n\
+                [[floors]]\nfrom = [0.0, 5.0]\nto = [200.0, 5.0]\ndamping = 1.0\n\
+                [spawn]\ncount = 10\nradius = 4.0\nmax_speed = 1.0\n";
+    let error = scene_file::parse("full.toml", text, 1)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        error.contains("no room for that many balls of radius 4 above the floors"),
+        "{error}"
+    );
+}

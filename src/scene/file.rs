@@ -378,6 +378,16 @@ struct BallFile {
     trail: usize,
 }
 
+impl FloorFile {
+    fn floor(&self) -> Floor {
+        Floor {
+            from: Vec2::from(self.from),
+            to: Vec2::from(self.to),
+            damping: self.damping,
+        }
+    }
+}
+
 /// `count` balls at random positions inside the box, moving in random directions at random
 /// speeds up to `max_speed`, coloured in turn from `colours` and `trail_colours`: a `[spawn]`
 /// table. Public, with [`Spawn::new`] and [`Spawn::overlapping_balls`], so the lab
@@ -431,12 +441,21 @@ impl SceneFile {
                 });
             }
             let (width, height) = (f64::from(self.width), f64::from(self.height));
+            let floors: Vec<Floor> = self.floors.iter().map(FloorFile::floor).collect();
             // Balls that collide start apart; balls that pass through each other may start
-            // anywhere (as the `many` preset's always have).
-            balls.extend(match self.ball_collisions {
-                Some(_) => spawn.balls(width, height, seed),
-                None => spawn.overlapping_balls(width, height, seed),
-            });
+            // anywhere (as the `many` preset's always have); both above every floor.
+            let spawned = match self.ball_collisions {
+                Some(_) => spawn.balls(width, height, seed, &floors),
+                None => spawn.overlapping_balls_above(width, height, seed, &floors),
+            };
+            balls.extend(spawned.ok_or_else(|| InvalidValue {
+                key: "spawn.count".to_string(),
+                value: spawn.count.to_string(),
+                allowed: format!(
+                    "there is no room for that many balls of radius {} above the floors",
+                    spawn.radius
+                ),
+            })?);
         }
         Ok(Scene {
             width: self.width,
@@ -446,15 +465,7 @@ impl SceneFile {
             gravity: self.gravity,
             drag: self.drag,
             walls: self.walls.map(|w| w.damping),
-            floors: self
-                .floors
-                .into_iter()
-                .map(|f| Floor {
-                    from: Vec2::from(f.from),
-                    to: Vec2::from(f.to),
-                    damping: f.damping,
-                })
-                .collect(),
+            floors: self.floors.iter().map(FloorFile::floor).collect(),
             floor_colour: self.floor_colour,
             ball_collisions: self.ball_collisions.map(|c| c.restitution),
             motion: Motion {
@@ -489,37 +500,48 @@ impl Spawn {
     }
 
     /// The balls, spread over the box so that they never overlap when they fit side by side:
-    /// the box is cut into equal square slots (the largest that give one per ball), the balls
-    /// go into slots picked at random, each at a random spot inside its slot. A slot narrower
-    /// than a ball gets the ball at its centre: so many balls cannot help overlapping.
-    fn balls(&self, width: f64, height: f64, seed: u64) -> Vec<BallSpec> {
+    /// the box is cut into equal square slots (the largest that give one per ball above the
+    /// floors), the balls go into slots picked at random, each at a random spot inside its
+    /// slot. A slot narrower than a ball gets the ball at its centre: so many balls cannot
+    /// help overlapping. `None` if the floors leave no room for them.
+    fn balls(&self, width: f64, height: f64, seed: u64, floors: &[Floor]) -> Option<Vec<BallSpec>> {
         let mut random = Random::new(seed);
-        let Some((columns, rows)) = slots(width, height, self.count) else {
-            return Vec::new(); // an empty box; validation names it
-        };
-        let side = width / columns as f64;
-        let corner = [0.0, (height - rows as f64 * side) / 2.0];
+        let r = self.radius;
+        // Smaller slots until enough lie wholly above the floors (all do without floors).
+        let (side, corner, mut order) = (self.count..=self.count.saturating_mul(64))
+            .step_by(self.count.div_ceil(8).max(1))
+            .find_map(|slots_wanted| {
+                let (columns, rows) = slots(width, height, slots_wanted)?;
+                let side = width / columns as f64;
+                let corner = Vec2::new(0.0, (height - rows as f64 * side) / 2.0);
+                let reach = r + (side / 2.0 - r).max(0.0) * std::f64::consts::SQRT_2;
+                // Each slot's centre from the corner (added last, as the spot's is).
+                let centre = |slot: usize| {
+                    let k = Vec2::new((slot % columns) as f64, (slot / columns) as f64);
+                    (k + Vec2::new(0.5, 0.5)) * side
+                };
+                let free: Vec<Vec2> = (0..columns * rows)
+                    .map(centre)
+                    .filter(|&c| above_floors(corner + c, reach, floors))
+                    .collect();
+                (free.len() >= self.count).then_some((side, corner, free))
+            })?;
         // The first `count` of the slots shuffled (Fisher–Yates, stopped early).
-        let mut order: Vec<usize> = (0..columns * rows).collect();
         for i in 0..self.count {
             let pick = i + (random.next_u64() % (order.len() - i) as u64) as usize;
             order.swap(i, pick);
         }
-        let r = self.radius;
         let play = (side / 2.0 - r).max(0.0);
-        order[..self.count]
-            .iter()
-            .enumerate()
-            .map(|(i, &slot)| {
-                let centre = [slot % columns, slot / columns]
-                    .map(|k| (k as f64 + 0.5) * side + random.range(-play, play));
-                // `max`/`min` rather than `clamp`, which panics on a radius too big for the
-                // box (validation names that one).
-                let x = (corner[0] + centre[0]).max(r).min(width - r);
-                let y = (corner[1] + centre[1]).max(r).min(height - r);
-                self.ball(i, x, y, &mut random)
-            })
-            .collect()
+        let balls = order[..self.count].iter().enumerate().map(|(i, &centre)| {
+            let jitter = Vec2::new(random.range(-play, play), random.range(-play, play));
+            let spot = corner + (centre + jitter);
+            // `max`/`min` rather than `clamp`, which panics on a radius too big for the
+            // box (validation names that one).
+            let x = spot.x.max(r).min(width - r);
+            let y = spot.y.max(r).min(height - r);
+            self.ball(i, x, y, &mut random)
+        });
+        Some(balls.collect())
     }
 
     /// The balls at uniformly random spots, overlapping where chance puts them: for balls
@@ -527,12 +549,27 @@ impl Spawn {
     /// (`bouncing_ball_lab::scenes::pile`), whose measured figures (`docs/contacts.md`) are
     /// for these.
     pub fn overlapping_balls(&self, width: f64, height: f64, seed: u64) -> Vec<BallSpec> {
+        self.overlapping_balls_above(width, height, seed, &[])
+            .unwrap_or_default()
+    }
+
+    /// [`Spawn::overlapping_balls`], each ball drawn again until it lies wholly above the
+    /// floors; `None` if one is drawn [`SPAWN_TRIES`] times without.
+    fn overlapping_balls_above(
+        &self,
+        width: f64,
+        height: f64,
+        seed: u64,
+        floors: &[Floor],
+    ) -> Option<Vec<BallSpec>> {
         let mut random = Random::new(seed);
         let r = self.radius;
         (0..self.count)
             .map(|i| {
-                let (x, y) = (random.range(r, width - r), random.range(r, height - r));
-                self.ball(i, x, y, &mut random)
+                let spot = (0..SPAWN_TRIES)
+                    .map(|_| Vec2::new(random.range(r, width - r), random.range(r, height - r)))
+                    .find(|&spot| above_floors(spot, r, floors))?;
+                Some(self.ball(i, spot.x, spot.y, &mut random))
             })
             .collect()
     }
@@ -553,6 +590,24 @@ impl Spawn {
             trail: self.trail,
         }
     }
+}
+
+/// How many spots a spawned ball may be drawn at before the floors are taken to leave it no
+/// room.
+const SPAWN_TRIES: usize = 10_000;
+
+/// Whether a disc of radius `reach` at `centre` lies wholly above every floor: clear of the
+/// segment, and not below it where it spans the disc's x (y grows downwards).
+fn above_floors(centre: Vec2, reach: f64, floors: &[Floor]) -> bool {
+    floors.iter().all(|floor| {
+        let [from, to] = floor.ends();
+        let (_, distance) = floor.nearest(centre);
+        let (left, right) = (from.x.min(to.x), from.x.max(to.x));
+        let under = left < right
+            && (left..=right).contains(&centre.x)
+            && centre.y > from.y + (to.y - from.y) * (centre.x - from.x) / (to.x - from.x);
+        distance >= reach && !under
+    })
 }
 
 /// The columns and rows of the largest square slots, a whole number across the width, of
