@@ -244,15 +244,22 @@ fn the_readme_answers_the_reflection_questions_with_the_programs_numbers() {
     );
 
     // 3. How far the ball moves in a frame: the gap a trail one step behind would show.
-    let mut steps: Vec<f64> = rows
+    let step = |w: &[[f64; 6]]| (w[1][2] - w[0][2]).hypot(w[1][3] - w[0][3]);
+    let mut steps: Vec<f64> = rows.windows(2).map(step).collect();
+    let longest = rows
         .windows(2)
-        .map(|w| (w[1][2] - w[0][2]).hypot(w[1][3] - w[0][3]))
-        .collect();
+        .max_by(|a, b| step(a).total_cmp(&step(b)))
+        .unwrap();
+    let landing = rows[longest[1][0] as usize + 1];
+    assert_eq!(landing[3], 228.0, "the longest step leads into a bounce");
     steps.sort_by(f64::total_cmp);
     quoted(format!(
-        "{:.1} px on the median frame of the default scene and up to {:.0} px just after a bounce",
+        "{:.1} px on the median frame of the default scene and up to {:.0} px on the step into a bounce (frames {} → {}, before the ball reaches the floor in frame {})",
         steps[steps.len() / 2],
-        steps[steps.len() - 1]
+        steps[steps.len() - 1],
+        longest[0][0],
+        longest[1][0],
+        landing[0]
     ));
 }
 

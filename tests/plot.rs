@@ -29,6 +29,18 @@ fn polylines(svg: &str) -> Vec<(String, Vec<(f64, f64)>)> {
         .collect()
 }
 
+/// Every `<polyline>`'s stroke width, px, in drawing order.
+fn stroke_widths(svg: &str) -> Vec<f64> {
+    svg.split("<polyline")
+        .skip(1)
+        .map(|rest| {
+            let start = rest.find("stroke-width=\"").expect("a stroke width") + 14;
+            let end = start + rest[start..].find('"').unwrap();
+            rest[start..end].parse().unwrap()
+        })
+        .collect()
+}
+
 /// The polylines with one point per frame: the series (legend samples and bounce marks
 /// have two points).
 fn series_lines(svg: &str, frames: usize) -> Vec<(String, Vec<(f64, f64)>)> {
@@ -226,6 +238,31 @@ fn many_ball_svg_draws_total_energies_and_the_deepest_overlap_of_every_frame() {
     assert_series(&svg, 0, "total energy", &lines[2].1, &sum);
     assert_series(&svg, 1, "deepest overlap", &lines[3].1, &overlap);
     assert!(svg.contains("deepest overlap, px") && svg.contains("restitution 0.9"));
+}
+
+#[test]
+fn a_line_that_coincides_with_an_earlier_one_still_shows_around_it() {
+    // Billiards has no gravity: all its energy is kinetic, so the total lies on the kinetic
+    // line, frame for frame.
+    let dir = tempfile::tempdir().unwrap();
+    let output = run_in(dir.path(), &["-p", "billiards", "--plot", "b.svg", "-q"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let svg = std::fs::read_to_string(dir.path().join("b.svg")).unwrap();
+    let frames = 200;
+    let lines = series_lines(&svg, frames);
+    assert_eq!(lines[0].1, lines[2].1, "kinetic and total coincide");
+    let widths: Vec<f64> = polylines(&svg)
+        .iter()
+        .zip(stroke_widths(&svg))
+        .filter(|((_, points), _)| points.len() == frames)
+        .map(|(_, width)| width)
+        .collect();
+    assert!(
+        widths[0] > widths[2],
+        "the kinetic line ({} px) must be wider than the total drawn over it ({} px)",
+        widths[0],
+        widths[2]
+    );
 }
 
 #[test]

@@ -142,8 +142,12 @@ fn draw_panel<DB: DrawingBackend>(
     });
     chart.draw_series(marks)?;
     let mut legend: Vec<(&str, ShapeStyle, bool)> = Vec::new();
-    for (i, series) in in_panel {
-        let style = COLOURS[i % COLOURS.len()].stroke_width(2);
+    // Each line is drawn narrower than the one before it, so a line that coincides with an
+    // earlier one (billiards' kinetic energy under its total, with no gravity) still shows
+    // as a border around it.
+    let count = in_panel.len() as u32;
+    for (j, (i, series)) in (0u32..).zip(in_panel) {
+        let style = COLOURS[i % COLOURS.len()].stroke_width(2 + 2 * (count - 1 - j));
         let points = series
             .values
             .iter()
