@@ -473,7 +473,7 @@ fn a_chaotic_scene_past_the_references_horizon_judges_no_method_there() {
 fn a_comparison_predicted_over_the_time_budget_is_refused_at_once_in_one_line_and_no_file() {
     // The pile in exact mode takes tens of seconds to compare; the estimate says so up front.
     let dir = temp_dir();
-    let args = ["--preset", "pile", "--frames", "40", "--time-budget", "1"];
+    let args = ["--preset", "pile", "--frames", "40", "--time-budget", "0.1"];
     let alone = RUNS
         .write()
         .unwrap_or_else(|poisoned| poisoned.into_inner());
@@ -484,8 +484,16 @@ fn a_comparison_predicted_over_the_time_budget_is_refused_at_once_in_one_line_an
     let err = text(&output.stderr);
     assert_eq!(output.status.code(), Some(2), "{err}");
     assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
-    assert!(err.contains("--time-budget"), "names the knob: {err}");
-    assert!(took < 2.0, "refused after {took:.2} s, expected under 2 s");
+    assert!(
+        err.contains("--time-budget") && err.contains("over the time budget of 0.1 s"),
+        "names the knob and the budget: {err}"
+    );
+    // Refused before the work, which takes over half a minute. How fast the refusal is (about
+    // a second) is measured by `cargo run --release --example budget`, not timed here.
+    assert!(
+        took < 10.0,
+        "refused after {took:.2} s: after the work, not before it"
+    );
     let files: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
     assert!(files.is_empty(), "left files behind: {files:?}");
 }

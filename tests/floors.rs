@@ -127,3 +127,27 @@ fn a_ball_hitting_an_end_point_bounces_off_it_as_off_a_point() {
         "elastic: speed kept, expected 14, got {speed}"
     );
 }
+
+#[test]
+fn a_ball_struck_through_a_floor_within_one_step_is_put_back_on_its_side_and_bounces() {
+    // A level floor at y = 100; a ball of radius 4 whose centre went from y 90 to y 105 in
+    // one step (another ball struck it harder than its own floor contact foresaw).
+    let floor = Floor {
+        from: Vec2::new(0.0, 100.0),
+        to: Vec2::new(200.0, 100.0),
+        damping: 0.5,
+    };
+    let mut ball = Ball::new(50.0, 105.0, 1.0, 10.0, 4.0, 0);
+    floor.undo_crossing(&mut ball, Vec2::new(49.0, 90.0));
+    // Back above, touching the face: y = 100 − r; the normal speed reflected with damping.
+    assert_eq!(
+        (ball.x, ball.y),
+        (50.0, 96.0),
+        "put back touching the floor"
+    );
+    assert_eq!((ball.vx, ball.vy), (1.0, -5.0), "expected (1, -0.5 × 10)");
+    // A ball that only overlaps the face (a resting contact) is the contacts' business.
+    let mut resting = Ball::new(50.0, 97.0, 0.0, 0.1, 4.0, 0);
+    floor.undo_crossing(&mut resting, Vec2::new(50.0, 96.9));
+    assert_eq!((resting.y, resting.vy), (97.0, 0.1), "left alone");
+}

@@ -83,6 +83,23 @@ impl Floor {
         self.bounce_off_end(ball);
     }
 
+    /// Puts back a ball whose centre crossed the segment's face on its way from `from`: a
+    /// ball thrown through the floor within one step (struck by another harder than its own
+    /// contacts could see coming). It goes back to the side it came from, touching the face,
+    /// its velocity reflected as in a bounce. Anything short of a crossing is left alone.
+    pub fn undo_crossing(&self, ball: &mut Ball, from: Vec2) {
+        let (now, start, normal) = (ball.position(), self.from, self.normal());
+        let (before, after) = ((from - start).dot(normal), (now - start).dot(normal));
+        if before == 0.0 || before * after > 0.0 {
+            return; // the centre stayed on its side
+        }
+        let met = from + before / (before - after) * (now - from);
+        if (0.0..=1.0).contains(&self.along(met)) {
+            let side = before.signum();
+            self.resolve(ball, normal * side, ball.radius - after * side);
+        }
+    }
+
     /// A ball overlapping the nearer end point is pushed out and reflected about the line
     /// from that point to its centre.
     fn bounce_off_end(&self, ball: &mut Ball) {

@@ -70,6 +70,7 @@ use super::grid::Grid;
 use super::sleep::Sleep;
 use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
+use crate::physics::floor::Floor;
 use crate::physics::integrate::integrator::{Forces, Movable};
 use crate::physics::maths;
 use crate::physics::motion::Motion;
@@ -417,16 +418,16 @@ impl ContactSolver {
             let mut local = std::mem::take(&mut self.scratch.local);
             self.scratch.solve_islands(&mut local, &stepping);
             self.scratch.move_untouched(&mut local, &stepping);
-            let walls = effects.walls.as_ref();
+            let (walls, floors) = (effects.walls.as_ref(), &effects.floors);
             let order = self.scratch.grid.order();
             for (copy, &i) in local.iter_mut().zip(order) {
-                copy_back(copy, &mut scene_balls[i], walls);
+                copy_back(copy, &mut scene_balls[i], walls, floors);
             }
             let sleep = &mut self.sleep;
             let restitution = self.settings.restitution;
             self.scratch
                 .restitution(&mut local, restitution, stepping.sub, |copy, k| {
-                    copy_back(copy, &mut scene_balls[order[k]], walls);
+                    copy_back(copy, &mut scene_balls[order[k]], walls, floors);
                     sleep.wake(order[k]); // it moved: its island wakes
                 });
             self.scratch.local = local;
@@ -820,11 +821,15 @@ impl Scratch {
 }
 
 /// Puts the solver's `copy` of a ball back into the scene's `ball`, inside the `walls`.
-fn copy_back(copy: &Body, ball: &mut Ball, walls: Option<&Walls>) {
+fn copy_back(copy: &Body, ball: &mut Ball, walls: Option<&Walls>, floors: &[Floor]) {
+    let from = ball.position();
     let (position, velocity) = (copy.position, copy.velocity);
     (ball.x, ball.y, ball.vx, ball.vy) = (position.x, position.y, velocity.x, velocity.y);
     if let Some(walls) = walls {
         ball.keep_inside(walls);
+    }
+    for floor in floors {
+        floor.undo_crossing(ball, from);
     }
 }
 
