@@ -17,13 +17,16 @@ const NS_PER_COLLIDING_BALL_STEP: f64 = 400.0;
 /// methods fly each ball along a parabola, Verlet and RK4 along curves whose times of
 /// contact take longer to find (measured on `--preset pile --collisions exact`, 100 frames:
 /// about 1 µs and 9 µs an event).
-const NS_PER_EULER_EVENT: f64 = 1_000.0;
-const NS_PER_CURVED_EVENT: f64 = 9_000.0;
+const NS_PER_EULER_EVENT: f64 = 1_300.0;
+const NS_PER_CURVED_EVENT: f64 = 9_500.0;
 /// Per floor per ball per step.
 const NS_PER_FLOOR_TEST: f64 = 10.0;
 /// Per ball or trail dot drawn, and per pixel of them (a frame that changed draws every ball).
 const NS_PER_DOT: f64 = 15.0;
 const NS_PER_DRAWN_PIXEL: f64 = 1.0;
+/// Per frame, changed or not: checking for a stop, merging an unchanged frame into the last
+/// (a still ball, 10 million frames: about 100 ns a frame with the two below).
+const NS_PER_FRAME: f64 = 60.0;
 /// Per ball per frame in which nothing changed: its trail recorded, the frame found unchanged
 /// (a sleeping pile's frames, fitted to `--preset pile -n 200000`).
 const NS_PER_QUIET_BALL: f64 = 15.0;
@@ -109,7 +112,7 @@ pub fn time_and_size(scene: &Scene, activity: &Activity) -> TimeAndSize {
     let frames = f64::from(scene.frames);
     // Every frame records the trails; only frames that changed are drawn and compared,
     // and only awake balls are stepped.
-    let every_frame = n * NS_PER_QUIET_BALL;
+    let every_frame = NS_PER_FRAME + n * NS_PER_QUIET_BALL;
     let drawing = canvas * NS_PER_CANVAS_PIXEL + dots * NS_PER_DOT + drawn * NS_PER_DRAWN_PIXEL;
     let changing = activity.drawn_frames * drawing
         + physics_ns(scene, activity)
