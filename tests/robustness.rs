@@ -681,7 +681,12 @@ fn a_short_frame_delay_and_an_empty_scene_draw_warnings_not_errors() {
             &["--scene", "empty.toml"],
             "warning: the scene has no balls",
         ),
-        (&["-n", "3000000"], "warning: this run looks to take about"),
+        // 100 million frames of the lesson: about half a minute (3 million take about 2 s,
+        // under the 5 s that draws the warning).
+        (
+            &["-n", "100000000"],
+            "warning: this run looks to take about",
+        ),
     ] {
         let mut child = spawn(dir.path(), &args(list), 3 << 30);
         let mut line = String::new();
