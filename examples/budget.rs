@@ -1,10 +1,11 @@
 //! Budget: the memory, time and GIF size the program predicts for a scene before running it,
-//! next to what the release binary measures (peak RSS and wall time from GNU time), for
+//! next to what the release binary measures (wall time, and peak RSS from GNU time), for
 //! every preset, long runs, exact mode's collisions and crowds. Shows how far the estimates
 //! can be trusted; each ratio is predicted over measured.
 //!
 //! Run: `cargo build --release && cargo run --release --example budget`. Needs GNU time at
-//! /usr/bin/time (skips the measurements without it). Writes only to a temporary folder.
+//! /usr/bin/time (skips the measurements without it). Each row is the median of three runs.
+//! Writes only to a temporary folder.
 
 use std::path::Path;
 use std::process::Command;
@@ -87,8 +88,8 @@ const SCENES: &[(&str, &str, &[&str])] = &[
 fn main() {
     let bin = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/release/bouncing_ball");
     let time = Path::new("/usr/bin/time");
-    let measure = bin.exists() && time.exists();
-    if !measure {
+    let measured = bin.exists() && time.exists();
+    if !measured {
         eprintln!("(no release binary or no /usr/bin/time: predictions only)");
     }
     let dir = tempfile::tempdir().expect("a temporary folder");
@@ -109,23 +110,13 @@ fn main() {
         let gif = dir.path().join("out.gif");
         let (mut rss, mut wall, mut gif_bytes) = ("-".to_string(), "-".to_string(), "-".into());
         let (mut time_ratio, mut gif_ratio) = ("-".to_string(), "-".to_string());
-        if measure {
-            let started = Instant::now();
-            let output = Command::new(time)
-                .args(["-f", "%M"])
-                .arg(&bin)
-                .args(&args)
-                .args(["-q", "--memory-budget", "100000", "--gif"])
-                .arg(&gif)
-                .arg("--png")
-                .arg(dir.path().join("out.png"))
-                .output()
-                .expect("GNU time runs");
-            // Timed here, not by GNU time's %e, which counts in hundredths of a second.
-            let seconds = started.elapsed().as_secs_f64();
-            let stderr = String::from_utf8_lossy(&output.stderr);
-            let last = stderr.lines().last().unwrap_or("");
-            let kb: f64 = last.trim().parse().unwrap_or(0.0);
+        if measured {
+            // The median of three runs: other work on the machine makes any one of them slow.
+            let mut runs: Vec<(f64, f64)> = (0..3)
+                .map(|_| measure(time, &bin, &args, dir.path()))
+                .collect();
+            runs.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let (seconds, kb) = runs[1];
             rss = format!("{:.0} MB", kb / 1024.0);
             wall = format!("{seconds:.3} s");
             time_ratio = format!("{:.2}", estimate.seconds / seconds);
@@ -162,4 +153,30 @@ fn apply(scene: &mut Scene, flags: &[&str]) {
             other => panic!("the example does not know the flags {other:?}"),
         }
     }
+}
+
+/// Runs the binary with `args` under GNU time, writing into `dir`: wall time, seconds (timed
+/// here: GNU time's %e counts hundredths of a second), and peak RSS, KB.
+fn measure(time: &Path, bin: &Path, args: &[String], dir: &Path) -> (f64, f64) {
+    let started = Instant::now();
+    let output = Command::new(time)
+        .args(["-f", "%M"])
+        .arg(bin)
+        .args(args)
+        .args(["-q", "--memory-budget", "100000", "--gif"])
+        .arg(dir.join("out.gif"))
+        .arg("--png")
+        .arg(dir.join("out.png"))
+        .output()
+        .expect("GNU time runs");
+    let seconds = started.elapsed().as_secs_f64();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    let kb = stderr
+        .lines()
+        .last()
+        .unwrap_or("")
+        .trim()
+        .parse()
+        .unwrap_or(0.0);
+    (seconds, kb)
 }

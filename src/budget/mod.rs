@@ -7,8 +7,8 @@
 //! GIF's size (4 GiB unless `--gif-budget`). Below the budget, a run predicted to take over
 //! 5 seconds or write over 1 GB draws a warning. Memory errs on the high side (it counts the
 //! largest each buffer can grow to); time and GIF size come from a pilot run of the physics
-//! and costs fitted to measured runs (within 3 times on the presets and long runs; see
-//! `cargo run --release --example budget` and docs/robustness.md).
+//! and costs fitted to measured runs (how close they come: `cargo run --release --example
+//! budget` and docs/robustness.md).
 //!
 //! This module holds the policy (the budget, the refusals, the warnings); the models are its
 //! submodules:

@@ -7,9 +7,9 @@
 //! its area), and each trail dot moves about as far as the ball: so a frame changes
 //! `4·d·(r + the dots' radii)` pixels. A circle is drawn from its box of whole pixels, so
 //! a frame changes only when a side of some circle's box crosses into another pixel (a
-//! slow ball changes a frame now and then; `draws_anew`). Summed over all the run's frames: the pilot's own, then the rest
-//! as its last two quarters point (a scene at rest by then stays at rest; one slowing down
-//! goes on slowing; see `Span::rest_of`).
+//! slow ball changes a frame now and then; `draws_anew`). Summed over all the run's frames:
+//! the pilot's own, then the rest as its last two quarters point (a scene at rest by then
+//! stays at rest; one slowing down goes on slowing; see `Span::rest_of`).
 
 use super::cost::{drawn_pixels, physics_ns, Activity};
 use crate::physics::{maths, Ball, Simulation, Vec2};
