@@ -249,7 +249,10 @@ fn spawned_balls_fill_the_canvas_the_flags_give() {
 fn a_run_predicted_beyond_the_time_budget_is_refused_before_any_work() {
     let dir = temp_dir();
     let started = std::time::Instant::now();
-    let output = run_in(dir.path(), &["--frames", "4294967295"]);
+    // 50 balls bouncing for 4.3 billion frames: days. (The lesson's one ball, which comes
+    // to roll slower and slower along the floor, takes about 20 minutes for as many frames,
+    // within the default hour.)
+    let output = run_in(dir.path(), &["-p", "many", "--frames", "4294967295"]);
     let err = stderr(&output);
     assert_eq!(output.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "one line: {err:?}");

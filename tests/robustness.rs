@@ -468,6 +468,48 @@ fn a_raised_memory_budget_is_checked_too() {
     );
 }
 
+/// Asserts that `list` is refused for its time in one line naming the estimate, within
+/// `seconds` of wall time (the pilot run of its physics is all it may do), writing nothing.
+fn assert_refused_for_time_within(list: &[&str], seconds: f64) {
+    let dir = tempfile::tempdir().unwrap();
+    let run = assert_refused(dir.path(), list, 2, "over the time budget of 0.1 s");
+    assert!(
+        run.stderr.contains("this run looks to take about"),
+        "{list:?}: names the estimate: {}",
+        run.stderr
+    );
+    let elapsed = run.elapsed.as_secs_f64();
+    assert!(
+        elapsed < seconds,
+        "{list:?}: expected a refusal within {seconds} s, took {elapsed:.2} s"
+    );
+}
+
+#[test]
+fn exact_collisions_with_rk4_and_substeps_are_refused_up_front_for_their_events() {
+    // Several seconds of collision events (about 9 µs each with RK4): the budget counts them.
+    let list = [
+        "-p",
+        "pile",
+        "--collisions",
+        "exact",
+        "--integrator",
+        "rk4",
+        "--substeps",
+        "4",
+        "--frames",
+        "100",
+        "--time-budget",
+        "0.1",
+    ];
+    assert_refused_for_time_within(&list, 2.0);
+}
+
+#[test]
+fn ten_million_frames_of_the_lesson_are_refused_up_front_for_their_length() {
+    assert_refused_for_time_within(&["--frames", "10000000", "--time-budget", "0.1"], 2.0);
+}
+
 #[test]
 fn finite_inputs_that_overflow_stop_with_exit_2_naming_ball_frame_and_inputs() {
     let dir = tempfile::tempdir().unwrap();
@@ -630,7 +672,12 @@ fn a_short_frame_delay_and_a_long_run_draw_warnings_not_errors() {
             "warning: --frame-ms 0: browsers show frames shorter than 20 ms",
         ),
         (&["--frame-ms", "10", "-n", "2"], "warning: --frame-ms 10"),
-        (&["-n", "3000000"], "warning: this run looks to take about"),
+        // 100 million frames of the lesson: about half a minute (3 million take about 2 s,
+        // under the 5 s that draws the warning).
+        (
+            &["-n", "100000000"],
+            "warning: this run looks to take about",
+        ),
     ] {
         let mut child = spawn(dir.path(), &args(list), 3 << 30);
         let mut line = String::new();

@@ -7,8 +7,8 @@
 //! GIF's size (4 GiB unless `--gif-budget`). Below the budget, a run predicted to take over
 //! 5 seconds or write over 1 GB draws a warning. Memory errs on the high side (it counts the
 //! largest each buffer can grow to); time and GIF size come from a pilot run of the physics
-//! and costs fitted to measured runs (within 3 times on the presets and long runs; see
-//! `cargo run --release --example budget` and docs/robustness.md).
+//! and costs fitted to measured runs (how close they come: `cargo run --release --example
+//! budget` and docs/robustness.md).
 //!
 //! This module holds the policy (the budget, the refusals, the warnings); the models are its
 //! submodules:
@@ -197,25 +197,36 @@ impl Estimate {
 
     /// What about `scene` works but may surprise, one line each.
     pub fn warnings(&self, scene: &Scene) -> Vec<String> {
-        let mut warnings = Vec::new();
-        if scene.frame_ms < WARN_FRAME_MS {
-            warnings.push(format!(
-                "--frame-ms {}: browsers show frames shorter than {WARN_FRAME_MS} ms for 100 ms",
-                scene.frame_ms
-            ));
-        }
-        if scene.balls.is_empty() {
-            warnings.push("the scene has no balls: the animation will be empty".to_string());
-        }
-        if self.seconds > WARN_SECONDS || self.gif_bytes > WARN_GIF_BYTES {
-            warnings.push(format!(
+        let long = (self.seconds > WARN_SECONDS || self.gif_bytes > WARN_GIF_BYTES).then(|| {
+            format!(
                 "this run looks to take about {} and write a GIF of about {} (Ctrl-C stops it and writes nothing)",
                 Duration(self.seconds),
                 megabytes(self.gif_bytes as u64)
-            ));
-        }
-        warnings
+            )
+        });
+        frame_ms_warning(scene).into_iter().chain(long).collect()
     }
+}
+
+/// The warning for frames shown shorter than browsers show them, if `scene`'s are.
+pub fn frame_ms_warning(scene: &Scene) -> Option<String> {
+    (scene.frame_ms < WARN_FRAME_MS).then(|| {
+        format!(
+            "--frame-ms {}: browsers show frames shorter than {WARN_FRAME_MS} ms for 100 ms",
+            scene.frame_ms
+        )
+    })
+}
+
+/// The warning for work predicted to take `seconds`, if that is long (a comparison, whose
+/// GIF size is each method's business).
+pub fn long_work_warning(seconds: f64) -> Option<String> {
+    (seconds > WARN_SECONDS).then(|| {
+        format!(
+            "this looks to take about {} (Ctrl-C stops it and writes nothing)",
+            Duration(seconds)
+        )
+    })
 }
 
 /// Seconds as a person reads them: two significant figures below 10 s (0.4 s, 0.12 s,

@@ -5,18 +5,21 @@
 //!
 //! A disc of radius `r` moved by `d` px changes about `4·r·d` pixels (two crescents; at most
 //! its area), and each trail dot moves about as far as the ball: so a frame changes
-//! `4·d·(r + the dots' radii)` pixels, and below one pixel it changes with that probability
-//! (a slow ball changes a frame now and then). Summed over all the run's frames: the pilot's
-//! own, then its last quarter's pace for the rest (a scene at rest by then stays at rest).
+//! `4·d·(r + the dots' radii)` pixels. A circle is drawn from its box of whole pixels, so
+//! a frame changes only when a side of some circle's box crosses into another pixel (a
+//! slow ball changes a frame now and then; `draws_anew`). Summed over all the run's frames:
+//! the pilot's own, then the rest as its last two quarters point (a scene at rest by then
+//! stays at rest; one slowing down goes on slowing; see `Span::rest_of`).
 
 use super::cost::{drawn_pixels, physics_ns, Activity};
-use crate::physics::{Ball, Simulation, Vec2};
+use crate::physics::{maths, Ball, Simulation, Vec2};
+use crate::render::palette::{drawn_dots, fade};
 use crate::scene::{BallSpec, Scene};
 
-/// The pilot stops once its physics has cost this much by the model, ns (0.15 s): a few
+/// The pilot stops once its physics has cost this much by the model, ns (0.25 s): a few
 /// million ball-steps, fewer with ball-ball collisions, fewer still where exact mode's events
 /// are many.
-const PILOT_NS: f64 = 1.5e8;
+const PILOT_NS: f64 = 2.5e8;
 /// The pilot never runs longer than this many frames: scenes that come to rest do so sooner.
 const PILOT_FRAMES: u32 = 100_000;
 
@@ -38,21 +41,29 @@ impl Activity {
         }
     }
 
-    /// What a whole run of `scene` does: the pilot's frames, then the rest at the pace of
-    /// the pilot's last quarter.
+    /// What a whole run of `scene` does: the pilot's frames, then the rest as the pilot's
+    /// last two quarters point (`rest_of`).
     pub fn of(scene: &Scene) -> Activity {
         let frames = pilot(scene);
-        let pilot = frames.len();
-        let mut total = Activity::default();
-        let mut tail = Activity::default();
-        for (frame, this) in frames.into_iter().enumerate() {
-            total.add(this);
-            if frame >= pilot - pilot.div_ceil(4) {
-                tail.add(this);
-            }
-        }
-        let rest = (f64::from(scene.frames) - pilot as f64) / pilot.div_ceil(4) as f64;
-        total.add(tail.times(rest));
+        let quarter = frames.len().div_ceil(4);
+        let (head, last) = frames.split_at(frames.len() - quarter);
+        let before = &head[head.len().saturating_sub(quarter)..];
+        let sum = |frames: &[Activity]| {
+            let mut sum = Activity::default();
+            frames.iter().for_each(|frame| sum.add(*frame));
+            sum
+        };
+        let full_quarters = before.len() == quarter;
+        let (mut total, last, before) = (sum(&frames), sum(last), sum(before));
+        // Each quantity on its own: the balls stepped go on as they were while the pixels
+        // that change may die away.
+        let span = Span {
+            pilot: frames.len() as f64,
+            quarter: quarter as f64,
+            run: f64::from(scene.frames),
+            full_quarters,
+        };
+        total.add(last.zip(before, |last, before| span.rest_of(last, before)));
         total
     }
 
@@ -68,15 +79,58 @@ impl Activity {
         }
     }
 
-    fn times(self, k: f64) -> Activity {
+    /// Each quantity of `self` with the same of `other`, through `f`.
+    fn zip(self, other: Activity, f: impl Fn(f64, f64) -> f64) -> Activity {
         Activity {
-            changed_frames: self.changed_frames * k,
-            drawn_frames: self.drawn_frames * k,
-            awake_ball_frames: self.awake_ball_frames * k,
-            events: self.events * k,
-            rect_pixels: self.rect_pixels * k,
-            changed_pixels: self.changed_pixels * k,
+            changed_frames: f(self.changed_frames, other.changed_frames),
+            drawn_frames: f(self.drawn_frames, other.drawn_frames),
+            awake_ball_frames: f(self.awake_ball_frames, other.awake_ball_frames),
+            events: f(self.events, other.events),
+            rect_pixels: f(self.rect_pixels, other.rect_pixels),
+            changed_pixels: f(self.changed_pixels, other.changed_pixels),
         }
+    }
+}
+
+/// Where the pilot stands in the run, frames.
+struct Span {
+    /// Frames the pilot ran, and a quarter of them (rounded up).
+    pilot: f64,
+    quarter: f64,
+    /// Frames in the whole run.
+    run: f64,
+    /// Whether the pilot ran two whole quarters, so that its pace can be compared.
+    full_quarters: bool,
+}
+
+impl Span {
+    /// How much of a quantity the frames after the pilot add, from its sum over the pilot's
+    /// last quarter (`last`) and the quarter before (`before`). A quantity that kept its
+    /// pace, or grew, goes on at the last quarter's pace. One that slowed goes on slowing
+    /// as it did, as a power of time: pace ∝ t^−α, with α from the two quarters. A ball
+    /// rolling to and fro on the floor, whose speed drops by the wall's damping at each
+    /// end, slows as 1/t (α = 1): its changes over a long run grow as the log of its
+    /// length, not in proportion to it.
+    fn rest_of(&self, last: f64, before: f64) -> f64 {
+        let pace = last / self.quarter;
+        let rest = self.run - self.pilot;
+        if !(self.full_quarters && before > last && last > 0.0) {
+            return pace * rest;
+        }
+        // The quarters' middles, and times as multiples of the last one's.
+        let (t_last, t_before) = (
+            self.pilot - self.quarter / 2.0,
+            self.pilot - self.quarter * 1.5,
+        );
+        let alpha = maths::ln(before / last) / maths::ln(t_last / t_before);
+        let (from, to) = (self.pilot / t_last, self.run / t_last);
+        // ∫ pace·(t / t_last)^−α dt from the pilot's end to the run's.
+        let integral = if (alpha - 1.0).abs() < 1e-9 {
+            maths::ln(to / from)
+        } else {
+            (maths::powf(to, 1.0 - alpha) - maths::powf(from, 1.0 - alpha)) / (1.0 - alpha)
+        };
+        pace * t_last * integral
     }
 }
 
@@ -93,18 +147,19 @@ fn pilot(scene: &Scene) -> Vec<Activity> {
     {
         simulation.step();
         let mut rect = Bounds::EMPTY;
-        let mut changed = 0.0;
+        let (mut changed, mut redrawn) = (0.0, false);
         for ((ball, spec), was) in simulation.balls().iter().zip(&scene.balls).zip(&mut was) {
-            let moved = (ball.position() - *was).length();
-            *was = ball.position();
-            if moved > 0.0 {
+            let step = ball.position() - *was;
+            if step != Vec2::ZERO {
                 let radii = ball.radius * (1.0 + dots_share(spec, scene.trail_shrink));
-                changed += (4.0 * moved * radii).min(drawn_pixels(spec, scene));
+                changed += (4.0 * step.length() * radii).min(drawn_pixels(spec, scene));
+                redrawn = redrawn || draws_anew(ball, *was, spec.trail, scene.trail_shrink);
                 rect.add(ball, canvas);
             }
+            *was = ball.position();
         }
         let changed = changed.min(canvas[0] * canvas[1]);
-        let chance = changed.min(1.0);
+        let chance = if redrawn { 1.0 } else { 0.0 };
         let this = Activity {
             changed_frames: chance,
             drawn_frames: chance,
@@ -128,6 +183,43 @@ fn awake(simulation: &Simulation) -> f64 {
         (false, true) => (n - sleeping) as f64,
         (false, false) => n as f64,
     }
+}
+
+/// Whether `ball`, which was at `was` a frame ago, draws anything different from what it
+/// drew then. The renderer draws a circle from its box of whole pixels
+/// (`crate::render::ellipse::PixelBox`), so a circle that moved below a pixel draws the
+/// same unless a side of its box crossed into another pixel. Each trail dot is now where
+/// the next older one was; the oldest, dropped from the trail, is left out (the smallest
+/// dot). A trail still filling up changes its dots' sizes and shades every frame.
+fn draws_anew(ball: &Ball, was: Vec2, capacity: usize, shrink: bool) -> bool {
+    let n = ball.trail.len();
+    if n < capacity {
+        return true;
+    }
+    let sides = |(x, y): (f64, f64), r: f64| {
+        [
+            (x - r) as i32,
+            (y - r) as i32,
+            (x + r) as i32,
+            (y + r) as i32,
+        ]
+    };
+    let now = ball.position();
+    if sides((now.x, now.y), ball.radius) != sides((was.x, was.y), ball.radius) {
+        return true;
+    }
+    // Dot `i` (from 1) and where it was, the point before it.
+    let moves = ball.trail.iter().zip(ball.trail.iter().skip(1));
+    let mut dots = moves.take(drawn_dots(n).end.saturating_sub(1)).enumerate();
+    dots.any(|(before, (&was, &now))| {
+        let i = before + 1;
+        let r = if shrink {
+            ball.radius * fade(i, n)
+        } else {
+            ball.radius
+        };
+        sides(now, r) != sides(was, r)
+    })
 }
 
 /// The trail dots' radii added up, as a share of the ball's: half the trail's length when
@@ -177,5 +269,58 @@ impl Bounds {
             return 0.0;
         }
         (self.high.x - self.low.x) * (self.high.y - self.low.y)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A pilot of 400 frames in a run of `run` frames.
+    fn span(run: f64) -> Span {
+        Span {
+            pilot: 400.0,
+            quarter: 100.0,
+            run,
+            full_quarters: true,
+        }
+    }
+
+    fn assert_close(actual: f64, expected: f64, what: &str) {
+        assert!(
+            (actual - expected).abs() <= 1e-6 * expected.abs().max(1.0),
+            "{what}: expected {expected}, got {actual}"
+        );
+    }
+
+    #[test]
+    fn a_quantity_that_kept_its_pace_goes_on_at_it() {
+        // 10 a frame in both quarters: 10 a frame for the 600 frames after the pilot.
+        assert_close(span(1000.0).rest_of(1000.0, 1000.0), 6000.0, "steady");
+        // Growing: the last quarter's pace, not more.
+        assert_close(span(1000.0).rest_of(1000.0, 500.0), 6000.0, "growing");
+    }
+
+    #[test]
+    fn a_quantity_that_stopped_stays_stopped() {
+        assert_close(span(1e7).rest_of(0.0, 1000.0), 0.0, "stopped");
+    }
+
+    #[test]
+    fn a_quantity_slowing_as_one_over_t_grows_as_the_log_of_the_run() {
+        // Pace c/t: the quarters around t = 250 and 350 sum to c·ln(300/200) and c·ln(400/300).
+        let c = 1000.0;
+        let (before, last) = (c * maths::ln(1.5), c * maths::ln(4.0 / 3.0));
+        for run in [1e4, 1e6, 1e8] {
+            let expected = c * maths::ln(run / 400.0);
+            let actual = span(run).rest_of(last, before);
+            // The power is fitted to two quarters' sums (α = 1.02 here), not to c/t itself:
+            // within 15 % over a run 250,000 times the pilot's length (a pace kept would be
+            // 100 times as much at 1e8 frames as at 1e6).
+            assert!(
+                (actual / expected - 1.0).abs() < 0.15,
+                "{run} frames: expected about {expected:.0}, got {actual:.0}"
+            );
+        }
     }
 }

@@ -58,9 +58,12 @@ impl Costs<'_> {
     }
 }
 
-/// Refuses a comparison predicted to take longer than `budget` allows.
-pub fn check(scene: &Scene, methods: &[Method], budget: &Budget) -> Result<(), OverBudget> {
-    budget.check_seconds(estimate_seconds(scene, methods))
+/// Refuses a comparison predicted to take longer than `budget` allows; returns the seconds
+/// it is predicted to take.
+pub fn check(scene: &Scene, methods: &[Method], budget: &Budget) -> Result<f64, OverBudget> {
+    let seconds = estimate_seconds(scene, methods);
+    budget.check_seconds(seconds)?;
+    Ok(seconds)
 }
 
 /// The substeps of the reference's last run on `scene`, from a pilot: the reference's own

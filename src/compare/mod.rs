@@ -26,7 +26,7 @@ pub mod table;
 
 use std::io::Write;
 
-use crate::budget::{Budget, Estimate};
+use crate::budget::{frame_ms_warning, long_work_warning, Budget, Estimate};
 use crate::job::{Files, Job, OutputKind, RunError, Summary};
 use crate::output::OutputError;
 use crate::physics::{Ball, Simulation};
@@ -90,10 +90,11 @@ pub fn compare(scene: &Scene, methods: &[Method], job: &Job) -> Result<Compariso
     for method in methods {
         Estimate::within(&method.on(scene), &each)?;
     }
-    estimate::check(scene, methods, &job.budget)?;
+    let seconds = estimate::check(scene, methods, &job.budget)?;
     job.check()?;
     let plot_format = job.path(OutputKind::Plot).map(Format::of).transpose()?;
-    let files = job.open(&[])?;
+    let warnings = [frame_ms_warning(scene), long_work_warning(seconds)];
+    let files = job.open(&warnings.into_iter().flatten().collect::<Vec<_>>())?;
 
     let bare = without_trails(scene);
     let reference = Reference::of(&bare, methods, job)?;
