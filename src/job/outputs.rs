@@ -14,6 +14,8 @@ pub enum Role {
     Trace,
     Plot,
     Table,
+    /// `check --diff`: expected | theirs | difference.
+    Diff,
 }
 
 impl Role {
@@ -25,6 +27,7 @@ impl Role {
             Role::Trace => "--trace",
             Role::Plot => "--plot",
             Role::Table => "--table",
+            Role::Diff => "--diff",
         }
     }
 }
@@ -42,7 +45,7 @@ impl Target {
         let (flag, path) = (self.role.flag(), self.path.as_path());
         match self.role {
             Role::Gif => Output::picture(flag, path, "gif"),
-            Role::Png => Output::picture(flag, path, "png"),
+            Role::Png | Role::Diff => Output::picture(flag, path, "png"),
             Role::Trace => Output::stream(flag, path),
             Role::Plot | Role::Table => Output::file(flag, path),
         }
