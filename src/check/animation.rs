@@ -182,7 +182,7 @@ impl Pictures<'_> {
             DisposalMethod::Any | DisposalMethod::Keep => None,
         };
         let indices = lzw_indices(&frame.lzw, frame.width, frame.height, frame.interlaced)
-            .ok_or_else(|| Trouble::NotWhole(format!("frame {number}'s pixels are cut short")))?;
+            .ok_or_else(|| Trouble::NotWhole(format!("frame {number}'s pixels do not fill it")))?;
         let palette = frame
             .palette
             .as_deref()
@@ -221,7 +221,7 @@ fn colour(palette: &[u8], index: u8) -> Option<Rgb<u8>> {
 }
 
 /// A frame's palette indices in row order from its LZW data (the minimum code size, then
-/// the codes), or `None` if they are cut short.
+/// the codes), or `None` unless they are exactly `width` × `height`.
 ///
 /// Decoded here with weezl in one piece rather than by the gif crate, whose own pixel
 /// decoding rejects valid interlaced frames with rows of a few odd bytes ("image truncated",
@@ -233,10 +233,9 @@ pub fn lzw_indices(lzw: &[u8], width: u32, height: u32, interlaced: bool) -> Opt
     // A stream that ends without its end code is read as far as it goes.
     let _ = decoder.into_stream(&mut stored).decode_all(codes);
     let (width, height) = (width as usize, height as usize);
-    if stored.len() < width * height {
+    if stored.len() != width * height {
         return None;
     }
-    stored.truncate(width * height);
     if !interlaced {
         return Some(stored);
     }

@@ -120,9 +120,10 @@ impl Theirs {
             break;
         }
         if let Source::Gif(timeline) = &source {
-            // A frame shown at the wrong moment differs, even if every picture is right.
+            // A frame shown at the wrong moment differs, even if every picture is right; the
+            // moment is named first, as what makes the picture differ there.
             if let Some((frame, what)) = timeline.off_beat(scene.frame_ms) {
-                if first.as_ref().is_none_or(|f: &First| frame < f.frame) {
+                if first.as_ref().is_none_or(|f: &First| frame <= f.frame) {
                     first = Some(First {
                         frame,
                         what,
