@@ -136,7 +136,11 @@ fn each_pitfall_gif_differs_at_the_frame_the_mistake_first_shows_and_is_named() 
         ("nothing-moves", 0, "nothing moves the ball yet"),
         ("gravity-twice", 0, "adding gravity twice in one step"),
         ("position-first", 1, "moving the ball before adding gravity"),
-        ("no-clamp", 26, "reflecting the velocity without clamping the position"),
+        (
+            "no-clamp",
+            26,
+            "reflecting the velocity without clamping the position",
+        ),
         (
             "gravity-at-bounce",
             27,

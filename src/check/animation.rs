@@ -15,7 +15,7 @@ use std::path::Path;
 use gif::DisposalMethod;
 use image::{Rgb, RgbImage};
 
-use super::Trouble;
+use super::found::Trouble;
 
 /// A GIF's frames as stored, not yet decoded.
 pub struct Animation {

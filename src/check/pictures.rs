@@ -11,9 +11,9 @@ use image::RgbImage;
 
 use super::animation::{Animation, Pictures};
 use super::expected::Frames;
+use super::found::{Comparison, First, Trouble};
 use super::pixels::{diff_picture, difference, Tolerance};
 use super::trajectory::Trajectory;
-use super::{Comparison, First, Trouble};
 use crate::scene::Scene;
 
 /// What a learner handed in.

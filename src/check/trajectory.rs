@@ -2,7 +2,7 @@
 //! `x y vx vy` lines the lesson's loop prints for its one ball, frame by frame.
 
 use super::expected::Motion;
-use super::{Comparison, First, Trouble};
+use super::found::{Comparison, First, Trouble};
 use crate::trace::HEADER;
 
 /// Every row of a trajectory, frame by frame and ball by ball within a frame.

@@ -6,8 +6,8 @@ use std::path::{Path, PathBuf};
 
 use serde_json::{json, Value};
 
+use super::found::{Comparison, Trouble};
 use super::pitfalls::Pitfall;
-use super::{Comparison, Trouble};
 use crate::scene::Scene;
 
 /// How a file compares, worst last.
