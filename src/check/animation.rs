@@ -16,6 +16,7 @@ use gif::DisposalMethod;
 use image::{Rgb, RgbImage};
 
 use super::found::Trouble;
+use crate::render::dirty::Rect;
 
 /// A GIF's frames as stored, not yet decoded.
 pub struct Animation {
@@ -113,6 +114,7 @@ impl Animation {
             next: 0,
             canvas: RgbImage::from_pixel(self.width, self.height, self.background),
             restore: None,
+            changed: None,
         }
     }
 }
@@ -124,22 +126,25 @@ pub struct Pictures<'a> {
     canvas: RgbImage,
     /// What the last frame's disposal puts back before the next is drawn: the area it covered
     /// and, if it restores what was before, those pixels (else the background).
-    restore: Option<(Area, Option<RgbImage>)>,
-}
-
-/// The part of the canvas a frame covers (clipped to the canvas).
-#[derive(Clone, Copy)]
-struct Area {
-    left: u32,
-    top: u32,
-    width: u32,
-    height: u32,
+    restore: Option<(Rect, Option<RgbImage>)>,
+    /// Where the canvas may have changed since [`Pictures::take_changed`] was last called.
+    changed: Option<Rect>,
 }
 
 impl Pictures<'_> {
     /// The picture shown now.
     pub fn canvas(&self) -> &RgbImage {
         &self.canvas
+    }
+
+    /// Where the canvas may have changed since the last call (`None`: nowhere).
+    pub fn take_changed(&mut self) -> Option<Rect> {
+        self.changed.take()
+    }
+
+    /// Notes that `area` of the canvas may change.
+    fn mark(&mut self, area: Rect) {
+        self.changed = Some(self.changed.map_or(area, |changed| changed.union(area)));
     }
 
     /// Draws the next stored frame onto the canvas (after the last, does nothing).
@@ -150,14 +155,15 @@ impl Pictures<'_> {
         let number = self.next;
         self.next += 1;
         if let Some((area, saved)) = self.restore.take() {
-            for (x, y) in area.pixels() {
+            self.mark(area);
+            for (x, y) in pixels(area) {
                 let before = saved.as_ref().map_or(self.animation.background, |saved| {
                     *saved.get_pixel(x - area.left, y - area.top)
                 });
                 self.canvas.put_pixel(x, y, before);
             }
         }
-        let area = Area {
+        let area = Rect {
             left: frame.left.min(self.canvas.width()),
             top: frame.top.min(self.canvas.height()),
             width: frame
@@ -167,6 +173,7 @@ impl Pictures<'_> {
                 .height
                 .min(self.canvas.height().saturating_sub(frame.top)),
         };
+        self.mark(area);
         self.restore = match frame.dispose {
             DisposalMethod::Background => Some((area, None)),
             DisposalMethod::Previous => {
@@ -187,30 +194,35 @@ impl Pictures<'_> {
             .palette
             .as_deref()
             .or(self.animation.global.as_deref());
-        for (x, y) in area.pixels() {
-            let (col, row) = (x - frame.left, y - frame.top);
-            let index = indices[(row * frame.width + col) as usize];
-            if Some(index) == frame.transparent {
-                continue;
+        let palette = palette.unwrap_or_default();
+        let canvas_width = self.canvas.width() as usize;
+        for y in area.top..area.top + area.height {
+            // Row by row, as slices: this loop is most of what a check costs.
+            let from = ((y - frame.top) * frame.width + (area.left - frame.left)) as usize;
+            let row = &indices[from..from + area.width as usize];
+            let onto = (y as usize * canvas_width + area.left as usize) * 3;
+            let onto = &mut (*self.canvas)[onto..onto + area.width as usize * 3];
+            for (&index, pixel) in row.iter().zip(onto.chunks_exact_mut(3)) {
+                if Some(index) == frame.transparent {
+                    continue;
+                }
+                let at = usize::from(index) * 3;
+                let rgb = palette.get(at..at + 3).ok_or_else(|| {
+                    Trouble::NotWhole(format!(
+                        "frame {number} uses colour {index}, not in its table"
+                    ))
+                })?;
+                pixel.copy_from_slice(rgb);
             }
-            let rgb = palette.and_then(|palette| colour(palette, index));
-            let rgb = rgb.ok_or_else(|| {
-                Trouble::NotWhole(format!(
-                    "frame {number} uses colour {index}, not in its table"
-                ))
-            })?;
-            self.canvas.put_pixel(x, y, rgb);
         }
         Ok(())
     }
 }
 
-impl Area {
-    /// Every pixel of the area, row by row.
-    fn pixels(self) -> impl Iterator<Item = (u32, u32)> {
-        let columns = self.left..self.left + self.width;
-        (self.top..self.top + self.height).flat_map(move |y| columns.clone().map(move |x| (x, y)))
-    }
+/// Every pixel of `area`, row by row.
+fn pixels(area: Rect) -> impl Iterator<Item = (u32, u32)> {
+    let columns = area.left..area.left + area.width;
+    (area.top..area.top + area.height).flat_map(move |y| columns.clone().map(move |x| (x, y)))
 }
 
 /// Colour `index` of a colour table.
@@ -229,13 +241,24 @@ fn colour(palette: &[u8], index: u8) -> Option<Rgb<u8>> {
 pub fn lzw_indices(lzw: &[u8], width: u32, height: u32, interlaced: bool) -> Option<Vec<u8>> {
     let (&code_size, codes) = lzw.split_first()?;
     let mut decoder = weezl::decode::Decoder::new(weezl::BitOrder::Lsb, code_size.clamp(2, 12));
-    let mut stored = Vec::new();
-    // A stream that ends without its end code is read as far as it goes.
-    let _ = decoder.into_stream(&mut stored).decode_all(codes);
     let (width, height) = (width as usize, height as usize);
-    if stored.len() != width * height {
+    // One byte more than a frame holds, to notice a frame that holds more.
+    let mut stored = vec![0; width * height + 1];
+    let (mut codes, mut filled) = (codes, 0);
+    loop {
+        let step = decoder.decode_bytes(codes, &mut stored[filled..]);
+        codes = &codes[step.consumed_in..];
+        filled += step.consumed_out;
+        // A stream that ends without its end code is read as far as it goes.
+        let going = matches!(step.status, Ok(weezl::LzwStatus::Ok));
+        if !going || step.consumed_in + step.consumed_out == 0 {
+            break;
+        }
+    }
+    if filled != width * height {
         return None;
     }
+    stored.truncate(filled);
     if !interlaced {
         return Some(stored);
     }

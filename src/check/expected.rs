@@ -4,17 +4,18 @@
 use crate::physics::ball::Ball;
 use crate::physics::simulation::Simulation;
 use crate::physics::walls::Walls;
+use crate::render::dirty::Rect;
 use crate::render::ellipse::fill_circle;
 use crate::render::palette::{IndexedFrame, Palette};
 use crate::render::raster::{Circle, Renderer};
-use crate::render::Canvas;
+use crate::render::{Canvas, Damage};
 use crate::scene::Scene;
 
 use super::pitfalls::Pitfall;
 
 /// The balls of a scene moving frame by frame, as the program moves them or with a mistake.
 pub enum Motion {
-    Scene(Simulation),
+    Scene(Box<Simulation>),
     Mistaken {
         balls: Vec<Ball>,
         pitfall: Pitfall,
@@ -29,7 +30,7 @@ impl Motion {
     pub fn new(scene: &Scene, pitfall: Option<Pitfall>) -> Option<Motion> {
         let simulation = scene.simulation();
         let Some(pitfall) = pitfall else {
-            return Some(Motion::Scene(simulation));
+            return Some(Motion::Scene(Box::new(simulation)));
         };
         let (gravity, walls) = simulation.lesson_step()?;
         Some(Motion::Mistaken {
@@ -75,7 +76,7 @@ pub struct Frames<'a> {
 /// How the frames are drawn.
 enum Drawing {
     /// As the main command draws them: only what changed is drawn again.
-    Redrawn(Canvas),
+    Redrawn(Box<Canvas>),
     /// Whole, with every trail's newest dot too: with a mistake it need not lie under the
     /// ball (the trail recorded before the move, or drawn over the ball).
     Whole {
@@ -92,7 +93,7 @@ impl<'a> Frames<'a> {
     pub fn new(scene: &Scene, renderer: &'a Renderer, pitfall: Option<Pitfall>) -> Option<Self> {
         let mut palette = renderer.palette().clone();
         let drawing = match pitfall {
-            None => Drawing::Redrawn(Canvas::new(renderer)),
+            None => Drawing::Redrawn(Box::new(Canvas::new(renderer))),
             Some(pitfall) => Drawing::Whole {
                 frame: renderer.new_frame(),
                 newest: scene
@@ -111,14 +112,20 @@ impl<'a> Frames<'a> {
         })
     }
 
-    /// The next frame, and the colours of its indices.
-    pub fn next_frame(&mut self) -> (&IndexedFrame, &Palette) {
+    /// The next frame, the colours of its indices, and where it may differ from the frame
+    /// before (`None`: nowhere).
+    pub fn next_frame(&mut self) -> (&IndexedFrame, &Palette, Option<Rect>) {
         self.motion.step();
         let (renderer, balls) = (self.renderer, self.motion.balls());
-        let frame = match &mut self.drawing {
+        let (frame, changed) = match &mut self.drawing {
             Drawing::Redrawn(canvas) => {
                 canvas.redraw(renderer, balls);
-                canvas.frame()
+                let changed = match canvas.damage() {
+                    Damage::Unchanged => None,
+                    Damage::Whole => Some(Rect::whole(canvas.frame())),
+                    Damage::Areas(areas) => areas.iter().copied().reduce(Rect::union),
+                };
+                (canvas.frame(), changed)
             }
             Drawing::Whole {
                 frame,
@@ -144,9 +151,10 @@ impl<'a> Frames<'a> {
                 for c in order {
                     fill_circle(frame, c.x, c.y, c.radius, c.index);
                 }
-                frame
+                let whole = Rect::whole(frame);
+                (&*frame, Some(whole))
             }
         };
-        (frame, &self.palette)
+        (frame, &self.palette, changed)
     }
 }

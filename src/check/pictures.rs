@@ -14,6 +14,7 @@ use super::expected::Frames;
 use super::found::{Comparison, First, Trouble};
 use super::pixels::{diff_picture, difference, Tolerance};
 use super::trajectory::Trajectory;
+use crate::render::dirty::Rect;
 use crate::scene::Scene;
 
 /// What a learner handed in.
@@ -93,17 +94,29 @@ impl Theirs {
         let last = scene.frames.saturating_sub(1);
         let shared = count.map_or(scene.frames, |n| n.min(scene.frames));
         let total = u64::from(scene.width) * u64::from(scene.height);
+        // Once a frame matches with no differing pixel allowed, the next can differ only where
+        // either side changed since; with some allowed, each frame is compared whole.
+        let regional = !tolerance.admits(1, total);
+        let mut compared = false;
         let mut first = None;
-        for k in 0..scene.frames {
-            if k >= shared {
-                break;
-            }
-            let (ours, palette) = expected.next_frame();
+        for k in 0..shared {
+            let (ours, palette, our_change) = expected.next_frame();
             if count.is_none() && k != last {
                 continue;
             }
-            let theirs = source.picture(k, scene)?;
-            let Some(found) = difference(ours, palette, theirs, tolerance) else {
+            let (theirs, their_change) = source.picture(k, scene)?;
+            let region = match compared && regional {
+                false => Some(whole(theirs)),
+                true => our_change
+                    .into_iter()
+                    .chain(their_change)
+                    .reduce(Rect::union),
+            };
+            compared = true;
+            let Some(region) = region else {
+                continue; // neither side changed
+            };
+            let Some(found) = difference(ours, palette, theirs, tolerance, region) else {
                 continue;
             };
             if tolerance.admits(found.pixels, total) {
@@ -148,10 +161,11 @@ enum Source<'a> {
 }
 
 impl Source<'_> {
-    /// The picture of frame `k` (asked for in increasing order).
-    fn picture(&mut self, k: u32, scene: &Scene) -> Result<&RgbImage, Trouble> {
-        match self {
-            Source::Gif(timeline) => timeline.picture_at(k),
+    /// The picture of frame `k` (asked for in increasing order), and where it may have
+    /// changed since the last one asked for.
+    fn picture(&mut self, k: u32, scene: &Scene) -> Result<(&RgbImage, Option<Rect>), Trouble> {
+        let picture = match self {
+            Source::Gif(timeline) => return timeline.picture_at(k),
             Source::Folder(files, read, budget) => {
                 let file = &files[k as usize];
                 let picture =
@@ -159,10 +173,11 @@ impl Source<'_> {
                         file: file.clone(),
                         trouble: Box::new(trouble),
                     })?;
-                Ok(read.insert(picture))
+                &*read.insert(picture)
             }
-            Source::Still(picture) => Ok(picture),
-        }
+            Source::Still(picture) => *picture,
+        };
+        Ok((picture, Some(whole(picture))))
     }
 }
 
@@ -198,8 +213,8 @@ impl<'a> Timeline<'a> {
     }
 
     /// The picture shown at the start of frame `k`: every stored frame that starts by then
-    /// drawn.
-    fn picture_at(&mut self, k: u32) -> Result<&RgbImage, Trouble> {
+    /// drawn; and where it changed since the last one asked for.
+    fn picture_at(&mut self, k: u32) -> Result<(&RgbImage, Option<Rect>), Trouble> {
         let now = u64::from(k) * self.frame_cs;
         while self
             .starts
@@ -209,7 +224,8 @@ impl<'a> Timeline<'a> {
             self.pictures.advance()?;
             self.drawn += 1;
         }
-        Ok(self.pictures.canvas())
+        let changed = self.pictures.take_changed();
+        Ok((self.pictures.canvas(), changed))
     }
 
     /// The first stored frame that starts between two of the scene's frames (or the end,
@@ -256,6 +272,16 @@ fn read_png(path: &Path, scene: &Scene, memory_budget: u64) -> Result<RgbImage, 
     Ok(image::DynamicImage::from_decoder(decoder)
         .map_err(bad)?
         .to_rgb8())
+}
+
+/// The whole of `picture`.
+fn whole(picture: &RgbImage) -> Rect {
+    Rect {
+        left: 0,
+        top: 0,
+        width: picture.width(),
+        height: picture.height(),
+    }
 }
 
 /// Refuses a picture whose size is not the scene's, saying both.

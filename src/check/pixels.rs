@@ -4,6 +4,7 @@
 
 use image::{Rgb, RgbImage};
 
+use crate::render::dirty::Rect;
 use crate::render::palette::{IndexedFrame, Palette};
 use crate::render::to_rgb;
 
@@ -46,29 +47,28 @@ pub struct Difference {
     pub y: (u32, u32),
 }
 
-/// What differs between the `expected` frame (palette indices) and `theirs`, beyond the
-/// tolerance's colour distance; `None` if no pixel does.
+/// What differs between the `expected` frame (palette indices) and `theirs` within
+/// `region`, beyond the tolerance's colour distance; `None` if no pixel does.
 pub fn difference(
     expected: &IndexedFrame,
     palette: &Palette,
     theirs: &RgbImage,
     tolerance: &Tolerance,
+    region: Rect,
 ) -> Option<Difference> {
     let colours = palette.colours();
     let max_delta = tolerance.max_delta();
     let mut found: Option<Difference> = None;
-    let width = expected.width() as usize;
-    let rows = expected.as_raw().chunks_exact(width);
-    for (y, (row, their_row)) in rows
-        .zip(theirs.as_raw().chunks_exact(width * 3))
-        .enumerate()
-    {
-        for (x, (&index, their)) in row.iter().zip(their_row.chunks_exact(3)).enumerate() {
-            let ours = colours[usize::from(index)];
-            if ours == their || !differs(ours, [their[0], their[1], their[2]], max_delta) {
+    let (ours, their_bytes) = (expected.as_raw(), theirs.as_raw());
+    for (y, row) in (region.top..).zip(region.rows(expected.width())) {
+        let their_row = &their_bytes[row.start * 3..row.end * 3];
+        for (x, (&index, their)) in
+            (region.left..).zip(ours[row].iter().zip(their_row.chunks_exact(3)))
+        {
+            let (ours, their) = (colours[usize::from(index)], [their[0], their[1], their[2]]);
+            if ours == their || !differs(ours, their, max_delta) {
                 continue;
             }
-            let (x, y) = (x as u32, y as u32);
             let d = found.get_or_insert(Difference {
                 pixels: 0,
                 x: (x, x),

@@ -79,7 +79,7 @@ impl Trajectory {
         if self.plain && balls != 1 {
             return Err(Trouble::PlainLines { balls });
         }
-        if self.rows.len() % balls != 0 {
+        if !self.rows.len().is_multiple_of(balls) {
             return Err(Trouble::PartFrame {
                 rows: self.rows.len(),
                 balls,
@@ -99,7 +99,9 @@ impl Trajectory {
                     });
                 }
                 let ours = [expected.x, expected.y, expected.vx, expected.vy];
-                let far = (0..4).find(|&k| !((ours[k] - row.state[k]).abs() <= tolerance));
+                // Not within the tolerance, a NaN included.
+                let close = |a: f64, b: f64| (a - b).abs() <= tolerance;
+                let far = (0..4).find(|&k| !close(ours[k], row.state[k]));
                 if let (None, Some(k)) = (&first, far) {
                     first = Some(First {
                         frame,
