@@ -61,15 +61,7 @@ impl Animation {
         let not_whole = |error: gif::DecodingError| Trouble::NotWhole(error.to_string());
         let mut decoder = options.read_info(BufReader::new(file)).map_err(not_whole)?;
         let (width, height) = (u32::from(decoder.width()), u32::from(decoder.height()));
-        let needs = canvas_bytes(width, height);
-        if needs > memory_budget {
-            return Err(Trouble::OverBudget {
-                width,
-                height,
-                needs,
-                budget: memory_budget,
-            });
-        }
+        Trouble::over_budget(width, height, canvas_bytes(width, height), memory_budget)?;
         let global = decoder.global_palette().map(<[u8]>::to_vec);
         let background = decoder
             .bg_color()

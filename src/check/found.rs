@@ -56,6 +56,21 @@ pub enum Trouble {
     PartFrame { rows: usize, balls: usize },
 }
 
+impl Trouble {
+    /// Refuses a `width` × `height` picture that `needs` more bytes to decode than `budget`.
+    pub fn over_budget(width: u32, height: u32, needs: u64, budget: u64) -> Result<(), Trouble> {
+        if needs <= budget {
+            return Ok(());
+        }
+        Err(Trouble::OverBudget {
+            width,
+            height,
+            needs,
+            budget,
+        })
+    }
+}
+
 /// A file against the expected frames: how many frames it holds (`None` for a still, which
 /// is the last) and where it first differs.
 pub struct Comparison {

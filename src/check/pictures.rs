@@ -259,15 +259,9 @@ fn read_png(path: &Path, scene: &Scene, memory_budget: u64) -> Result<RgbImage, 
     let reader = reader.with_guessed_format().map_err(Trouble::Read)?;
     let decoder = reader.into_decoder().map_err(bad)?;
     let (width, height) = decoder.dimensions();
+    // Decoded as RGBA at most, then as RGB.
     let needs = u64::from(width) * u64::from(height) * 4;
-    if needs > memory_budget {
-        return Err(Trouble::OverBudget {
-            width,
-            height,
-            needs,
-            budget: memory_budget,
-        });
-    }
+    Trouble::over_budget(width, height, needs, memory_budget)?;
     same_size("the PNG", (width, height), scene)?;
     Ok(image::DynamicImage::from_decoder(decoder)
         .map_err(bad)?
