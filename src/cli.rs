@@ -368,13 +368,17 @@ impl Cli {
             Failure { code: 2, ..failure }
         })?;
         let mut out = std::io::stdout().lock();
-        for verdict in &verdicts {
+        // -q: only what did not match.
+        let said = verdicts
+            .iter()
+            .filter(|v| !self.run.quiet || v.outcome != Outcome::Match);
+        for verdict in said {
             let _ = match args.format {
                 Format::Text => writeln!(out, "{}", verdict.line()),
                 Format::Json => writeln!(out, "{}", verdict.json()),
             };
         }
-        if verdicts.len() > 1 && matches!(args.format, Format::Text) {
+        if verdicts.len() > 1 && matches!(args.format, Format::Text) && !self.run.quiet {
             let _ = writeln!(out, "{}", check::verdict::summary(&verdicts));
         }
         let worst = verdicts.iter().map(|v| v.outcome).max();

@@ -383,6 +383,20 @@ fn a_diff_that_cannot_be_written_gets_one_line_and_exit_2_before_any_work() {
 }
 
 #[test]
+fn quiet_says_only_what_does_not_match() {
+    let dir = tempfile::tempdir().unwrap();
+    let (pillow, twice) = (fixture("pillow.gif"), fixture("pitfall-gravity-twice.gif"));
+    let output = check(dir.path(), &["-q", "-n", "30", &pillow]);
+    assert_says(&output, 0, &[]);
+    let output = check(dir.path(), &["-q", "-n", "30", &pillow, &twice]);
+    assert_says(
+        &output,
+        1,
+        &["pitfall-gravity-twice.gif: differs from frame 0"],
+    );
+}
+
+#[test]
 fn help_states_the_exit_codes() {
     let dir = tempfile::tempdir().unwrap();
     let output = check(dir.path(), &["--help"]);

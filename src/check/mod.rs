@@ -130,8 +130,8 @@ fn compare(
                 .map(Some),
             None => Ok(None),
         },
-        pictures => match expected::Frames::new(scene, renderer, pitfall) {
-            Some(mut frames) => pictures
+        Theirs::Images(images) => match expected::Frames::new(scene, renderer, pitfall) {
+            Some(mut frames) => images
                 .compare(
                     scene,
                     memory_budget,

@@ -19,12 +19,17 @@ use crate::scene::Scene;
 
 /// What a learner handed in.
 pub enum Theirs {
+    Images(Images),
+    Trajectory(Trajectory),
+}
+
+/// Handed-in pictures.
+pub enum Images {
     Gif(Animation),
     /// A PNG: the last frame.
     Still(RgbImage),
     /// A folder's PNG frames in name order.
     Folder(Vec<PathBuf>),
-    Trajectory(Trajectory),
 }
 
 impl Theirs {
@@ -40,7 +45,7 @@ impl Theirs {
             if files.is_empty() {
                 return Err(Trouble::EmptyFolder);
             }
-            return Ok(Theirs::Folder(files));
+            return Ok(Theirs::Images(Images::Folder(files)));
         }
         let mut start = [0; 8];
         let mut file = fs::File::open(path).map_err(Trouble::Read)?;
@@ -49,10 +54,11 @@ impl Theirs {
             [b'G', b'I', b'F', b'8', ..] => {
                 let animation = Animation::read(path, memory_budget)?;
                 same_size("the GIF", (animation.width, animation.height), scene)?;
-                Ok(Theirs::Gif(animation))
+                Ok(Theirs::Images(Images::Gif(animation)))
             }
             [0x89, b'P', b'N', b'G', ..] => {
-                Ok(Theirs::Still(read_png(path, scene, memory_budget)?))
+                let still = read_png(path, scene, memory_budget)?;
+                Ok(Theirs::Images(Images::Still(still)))
             }
             _ => {
                 let size = file.metadata().map_err(Trouble::Read)?.len();
@@ -67,7 +73,9 @@ impl Theirs {
             }
         }
     }
+}
 
+impl Images {
     /// These pictures against `expected`, frame by frame until the first difference; with
     /// `want_picture`, the difference drawn.
     pub fn compare(
@@ -80,16 +88,15 @@ impl Theirs {
     ) -> Result<Comparison, Trouble> {
         let frame_cs = u64::from(scene.frame_ms / 10).max(1);
         let (count, mut source) = match self {
-            Theirs::Gif(animation) => {
+            Images::Gif(animation) => {
                 let timeline = Timeline::new(animation, frame_cs);
                 (Some(timeline.frames), Source::Gif(timeline))
             }
-            Theirs::Folder(files) => (
+            Images::Folder(files) => (
                 Some(files.len() as u32),
                 Source::Folder(files, None, memory_budget),
             ),
-            Theirs::Still(picture) => (None, Source::Still(picture)),
-            Theirs::Trajectory(_) => unreachable!("a trajectory has no pictures"),
+            Images::Still(picture) => (None, Source::Still(picture)),
         };
         let last = scene.frames.saturating_sub(1);
         let shared = count.map_or(scene.frames, |n| n.min(scene.frames));
