@@ -351,6 +351,43 @@ fn every_bad_input_gets_one_line_naming_what_is_wrong_and_exit_2() {
 }
 
 #[test]
+fn a_gif_cut_anywhere_or_with_bytes_changed_is_graded_without_a_crash() {
+    let dir = tempfile::tempdir().unwrap();
+    let pillow = fs::read(fixture("pillow.gif")).unwrap();
+    let mut cases: Vec<Vec<u8>> = (1..pillow.len())
+        .step_by(499)
+        .map(|n| pillow[..n].to_vec())
+        .collect();
+    // Bytes changed through the header, the colour table and the frames (a fixed pattern).
+    for at in (6..pillow.len()).step_by(631) {
+        let mut changed = pillow.clone();
+        changed[at] ^= 0x5a;
+        cases.push(changed);
+    }
+    for (n, bytes) in cases.iter().enumerate() {
+        fs::write(dir.path().join("their.gif"), bytes).unwrap();
+        let output = check(dir.path(), &["-n", "30", "their.gif"]);
+        let cut = bytes.len() < pillow.len();
+        let allowed: &[i32] = if cut { &[2] } else { &[0, 1, 2] };
+        assert!(
+            output
+                .status
+                .code()
+                .is_some_and(|code| allowed.contains(&code)),
+            "case {n} ({} bytes): expected exit {allowed:?}, got {:?}: {}",
+            bytes.len(),
+            output.status.code(),
+            stderr(&output)
+        );
+        assert_eq!(
+            stdout(&output).lines().count(),
+            1,
+            "case {n}: expected one line"
+        );
+    }
+}
+
+#[test]
 fn a_diff_that_cannot_be_written_gets_one_line_and_exit_2_before_any_work() {
     let dir = tempfile::tempdir().unwrap();
     let twice = fixture("pitfall-gravity-twice.gif");
