@@ -351,6 +351,50 @@ fn every_bad_input_gets_one_line_naming_what_is_wrong_and_exit_2() {
 }
 
 #[test]
+fn a_trace_of_many_balls_matches_ball_by_ball_and_plain_lines_are_for_one_ball() {
+    let dir = tempfile::tempdir().unwrap();
+    run_ok(
+        dir.path(),
+        &["-q", "-p", "many", "-n", "20", "--trace", "many.csv"],
+    );
+    let output = check(dir.path(), &["-p", "many", "-n", "20", "many.csv"]);
+    assert_says(&output, 0, &["many.csv: match: 20 frames, 0.60 s"]);
+    let output = check(
+        dir.path(),
+        &[
+            "-p",
+            "many",
+            "-n",
+            "20",
+            &fixture("pitfall-gravity-at-bounce.txt"),
+        ],
+    );
+    assert_says(
+        &output,
+        2,
+        &["plain x y vx vy lines hold one ball, but the scene has"],
+    );
+}
+
+#[test]
+fn a_diff_is_written_only_when_a_file_differs_and_nothing_else_is_left() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = check(
+        dir.path(),
+        &["-n", "30", &fixture("pillow.gif"), "--diff", "d.png"],
+    );
+    assert_says(&output, 0, &["match"]);
+    let left: Vec<PathBuf> = fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert!(
+        left.is_empty(),
+        "expected nothing written on a match, got {left:?}"
+    );
+}
+
+#[test]
 fn a_gif_cut_anywhere_or_with_bytes_changed_is_graded_without_a_crash() {
     let dir = tempfile::tempdir().unwrap();
     let pillow = fs::read(fixture("pillow.gif")).unwrap();
