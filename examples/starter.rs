@@ -4,11 +4,14 @@
 //! library's renderer, then compares your ball with the library's `Ball::step` frame by frame.
 //! As shipped the ball just floats (nothing moves it); fill in the three TODOs in
 //! `StarterBall::step` until it reports a match. When your ball differs, it says at which
-//! frame, shows the values, and names the lesson's pitfall the difference looks like.
+//! frame, shows the values, names the lesson's pitfall the difference looks like, and exits
+//! with 1 (0 on a match), so a script or a class's CI can grade it.
 
 use std::io::BufWriter;
 use std::path::Path;
+use std::process::ExitCode;
 
+use bouncing_ball::check::pitfalls::Pitfall;
 use bouncing_ball::gif::GifWriter;
 use bouncing_ball::output::{commit_all, AtomicFile};
 use bouncing_ball::physics::{Ball, Trail, Walls};
@@ -82,102 +85,11 @@ fn scene() -> Scene {
     }
 }
 
-/// The lesson's "common pitfalls" that show in one step, so that a ball that differs from the
-/// library's can be matched against them.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Pitfall {
-    NothingMoves,
-    NoClamp,
-    GravityTwice,
-    GravityAtBounce,
-    PositionFirst,
-    TrailBeforeMove,
-}
-
-impl Pitfall {
-    const ALL: [Pitfall; 6] = [
-        Pitfall::NothingMoves,
-        Pitfall::NoClamp,
-        Pitfall::GravityTwice,
-        Pitfall::GravityAtBounce,
-        Pitfall::PositionFirst,
-        Pitfall::TrailBeforeMove,
-    ];
-
-    fn explain(self) -> &'static str {
-        match self {
-            Pitfall::NothingMoves => "nothing moves the ball yet: the TODOs are still empty",
-            Pitfall::NoClamp => {
-                "reflecting the velocity without clamping the position: the ball sinks into \
-                 the wall and jitters there (put it back on the wall, then flip the velocity)"
-            }
-            Pitfall::GravityTwice => "adding gravity twice in one step",
-            Pitfall::GravityAtBounce => {
-                "adding gravity again in the wall response: the ball speeds up at every bounce"
-            }
-            Pitfall::PositionFirst => {
-                "moving the ball before adding gravity: the lesson changes the velocity first"
-            }
-            Pitfall::TrailBeforeMove => {
-                "appending to the trail before the move: the trail lags a frame behind the ball"
-            }
-        }
-    }
-
-    /// One step of the lesson with this pitfall in it.
-    fn step(self, ball: &mut Ball) {
-        if self == Pitfall::NothingMoves {
-            ball.record_trail();
-            return;
-        }
-        if self == Pitfall::TrailBeforeMove {
-            ball.record_trail();
-        }
-        let kicks = if self == Pitfall::GravityTwice { 2 } else { 1 };
-        if self != Pitfall::PositionFirst {
-            for _ in 0..kicks {
-                ball.vy += GRAVITY;
-            }
-        }
-        ball.x += ball.vx;
-        ball.y += ball.vy;
-        if self == Pitfall::PositionFirst {
-            ball.vy += GRAVITY;
-        }
-        let r = ball.radius;
-        let axes = [
-            (&mut ball.x, &mut ball.vx, WIDTH, 0.0),
-            (&mut ball.y, &mut ball.vy, HEIGHT, GRAVITY),
-        ];
-        for (position, velocity, size, gravity) in axes {
-            let wall = if *position - r < 0.0 {
-                r
-            } else if *position + r > size {
-                size - r
-            } else {
-                continue;
-            };
-            if self != Pitfall::NoClamp {
-                *position = wall;
-            }
-            *velocity = -*velocity * BOUNCE_DAMPING;
-            if self == Pitfall::GravityAtBounce {
-                *velocity += gravity;
-            }
-        }
-        if self != Pitfall::TrailBeforeMove {
-            ball.record_trail();
-        }
-    }
-}
-
-/// Which pitfall turns `before` into `yours` in one step, if any does.
-fn diagnose(before: &Ball, yours: &Ball, library: &Ball) -> Option<&'static str> {
-    let simulated = Pitfall::ALL.into_iter().find_map(|pitfall| {
-        let mut ball = before.clone();
-        pitfall.step(&mut ball);
-        (ball == *yours).then(|| pitfall.explain())
-    });
+/// Which of the lesson's pitfalls turns `before` into `yours` in one step, if any does (the
+/// library simulates each: `bouncing_ball::check::pitfalls`, which `bouncing_ball check` uses
+/// too), or whole numbers for the position, which no one step shows.
+fn diagnose(before: &Ball, yours: &Ball, library: &Ball, walls: &Walls) -> Option<&'static str> {
+    let simulated = Pitfall::of_step(before, yours, GRAVITY, walls).map(Pitfall::explain);
     let whole = |ball: &Ball| ball.x.fract() == 0.0 && ball.y.fract() == 0.0;
     simulated.or_else(|| {
         (whole(yours) && !whole(library)).then_some(
@@ -187,7 +99,8 @@ fn diagnose(before: &Ball, yours: &Ball, library: &Ball) -> Option<&'static str>
     })
 }
 
-fn main() -> std::io::Result<()> {
+/// Exits 0 on a match and 1 on a mismatch, so a script or CI can grade it.
+fn main() -> std::io::Result<ExitCode> {
     let scene = scene();
     let renderer = Renderer::new(&scene).expect("the lesson's colours fit a GIF");
     // Written to a temporary file and renamed into place at the end, so a failed or
@@ -235,7 +148,10 @@ fn main() -> std::io::Result<()> {
 
     match first_difference {
         None => {
-            println!("MATCH: your ball follows the library's Ball exactly for all {FRAMES} frames.")
+            println!(
+                "MATCH: your ball follows the library's Ball exactly for all {FRAMES} frames."
+            );
+            Ok(ExitCode::SUCCESS)
         }
         Some((n, before, a, b)) => {
             println!("MISMATCH at frame {n} (0 = after the first step):");
@@ -255,13 +171,13 @@ fn main() -> std::io::Result<()> {
             if a.trail != b.trail {
                 println!("  the trails differ");
             }
-            match diagnose(&before, &a, &b) {
+            match diagnose(&before, &a, &b, &walls) {
                 Some(pitfall) => println!("Looks like a pitfall from the lesson: {pitfall}."),
                 None => {
                     println!("This is not one of the lesson's pitfalls: compare with the hint.")
                 }
             }
+            Ok(ExitCode::FAILURE)
         }
     }
-    Ok(())
 }

@@ -12,6 +12,8 @@ use clap::{ArgAction, ArgMatches, CommandFactory, FromArgMatches, Id, Parser, Su
 use clap_complete::Shell;
 
 use crate::budget::{Budget, DEFAULT_GIF_BUDGET, DEFAULT_MEMORY_BUDGET, DEFAULT_TIME_BUDGET};
+use crate::check::pixels::Tolerance;
+use crate::check::{self, Outcome};
 use crate::compare::methods::{self, MethodList};
 use crate::job::{Job, OutputKind, Summary};
 use crate::messages::{flag, refuse, seconds, summary_line, whole_number, Failure};
@@ -101,6 +103,8 @@ struct SceneArgs {
 
 #[derive(Subcommand, Debug)]
 enum Subcommands {
+    /// Grade a learner's work against the scene: GIFs, PNGs, folders of PNG frames or trajectories, each compared with the scene drawn in memory (docs/grading.md)
+    Check(Box<CheckArgs>),
     /// Run the scene with several methods side by side, each measured against a reference: a GIF of them together, a table of time, error and energy, and optionally a work-precision plot
     Compare(Box<CompareArgs>),
     /// Print a shell completion script, for an installed binary (`cargo install --path .`), e.g. `bouncing_ball completions bash > ~/.local/share/bash-completion/completions/bouncing_ball`
@@ -167,6 +171,47 @@ impl SkipArgs {
     }
 }
 
+/// `check`: the files to grade, the scene they should show, and how close is close enough.
+#[derive(clap::Args, Debug)]
+#[command(
+    after_help = "Exit status, as diff and cmp: 0 if every file matches, 1 if any differs, \
+                        2 if any is in trouble (not an image or a trajectory, unreadable, \
+                        another size or number of frames, or a --diff that cannot be written)."
+)]
+struct CheckArgs {
+    /// The work to grade, recognised by content: an animated GIF, a PNG (the last frame), a
+    /// folder of PNG frames (in name order), a --trace CSV or the lesson's `x y vx vy` lines
+    #[arg(value_name = "THEIRS", required = true)]
+    theirs: Vec<PathBuf>,
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Colour distance under which two pixels count as the same, 0 to 1 (pixelmatch's YIQ distance, as Playwright's threshold)
+    #[arg(long, default_value_t = 0.0, value_parser = share)]
+    threshold: f64,
+    /// How many pixels of a frame may differ
+    #[arg(long, value_name = "N", value_parser = whole_number)]
+    max_diff_pixels: Option<u64>,
+    /// What share of a frame's pixels may differ, 0 to 1
+    #[arg(long, value_name = "R", value_parser = share)]
+    max_diff_pixel_ratio: Option<f64>,
+    /// How far a trajectory's positions (px) and velocities (px/frame) may be off
+    #[arg(long, value_name = "PX", default_value_t = 0.0, value_parser = distance)]
+    tolerance: f64,
+    /// Write the first differing frame as expected | theirs | difference (PNG)
+    #[arg(long, value_name = "FILE.png")]
+    diff: Option<PathBuf>,
+    /// One line per file, or one JSON object per file
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+/// How `check` reports.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+enum Format {
+    Text,
+    Json,
+}
+
 /// `sweep`: the setting and its values, the scene, and where the tiled GIF goes.
 #[derive(clap::Args, Debug)]
 struct SweepArgs {
@@ -194,6 +239,7 @@ pub struct Cli {
 /// What the command line asks for.
 enum Command {
     Run(Box<Args>),
+    Check(Box<CheckArgs>),
     Compare(Box<CompareArgs>),
     Sweep(Box<SweepArgs>),
     Completions(Shell),
@@ -229,6 +275,7 @@ impl Cli {
         };
         let run = std::mem::take(&mut args.run);
         let command = match args.command.take() {
+            Some(Subcommands::Check(check)) => Command::Check(check),
             Some(Subcommands::Compare(compare)) => Command::Compare(compare),
             Some(Subcommands::Sweep(sweep)) => Command::Sweep(sweep),
             Some(Subcommands::Completions { shell }) => Command::Completions(shell),
@@ -246,6 +293,7 @@ impl Cli {
     pub fn execute(self) -> Result<(), Failure> {
         match &self.command {
             Command::Run(args) => self.run_scene(args),
+            Command::Check(args) => self.check(args),
             Command::Compare(args) => self.compare(args),
             Command::Sweep(args) => self.sweep(args),
             Command::Completions(shell) => {
@@ -332,6 +380,52 @@ impl Cli {
         })?;
         self.say(&job, &done.table, &done.summary);
         Ok(())
+    }
+
+    /// `check THEIRS...`: a verdict line (or JSON object) per file, a summary after several,
+    /// and the exit code of the worst: 0 match, 1 differs, 2 trouble.
+    fn check(&self, args: &CheckArgs) -> Result<(), Failure> {
+        let scene = args.scene.scene(&self.lesson).map_err(Failure::input)?;
+        let mut job = self.job(&args.scene);
+        if let Some(path) = &args.diff {
+            job = job.with(OutputKind::Diff, path);
+        }
+        let options = check::Options {
+            pixels: Tolerance {
+                threshold: args.threshold,
+                max_diff_pixels: args.max_diff_pixels,
+                max_diff_pixel_ratio: args.max_diff_pixel_ratio,
+            },
+            tolerance: args.tolerance,
+            ..check::Options::default()
+        };
+        let verdicts = check::check(&scene, &args.theirs, &options, &job).map_err(|error| {
+            // Anything that stops the grading is trouble, a file that cannot be written too.
+            let failure = Failure::of_run(&error, |name| args.scene.settings.is_typed(name));
+            Failure { code: 2, ..failure }
+        })?;
+        let mut out = std::io::stdout().lock();
+        // -q: only what did not match.
+        let said = verdicts
+            .iter()
+            .filter(|v| !self.run.quiet || v.outcome != Outcome::Match);
+        for verdict in said {
+            let _ = match args.format {
+                Format::Text => writeln!(out, "{}", verdict.line()),
+                Format::Json => writeln!(out, "{}", verdict.json()),
+            };
+        }
+        if verdicts.len() > 1 && matches!(args.format, Format::Text) && !self.run.quiet {
+            let _ = writeln!(out, "{}", check::verdict::summary(&verdicts));
+        }
+        let worst = verdicts.iter().map(|v| v.outcome).max();
+        match worst.map_or(0, Outcome::exit_code) {
+            0 => Ok(()),
+            code => Err(Failure {
+                line: String::new(),
+                code,
+            }),
+        }
     }
 
     /// `sweep KEY=V1,V2,...`: the scene once per value, as if each were typed, tiled into one
@@ -547,4 +641,21 @@ fn command(lesson: &Scene) -> clap::Command {
     defaults(Args::command())
         .mut_subcommand("sweep", defaults)
         .mut_subcommand("compare", |command| per_method(defaults(command)))
+        .mut_subcommand("check", defaults)
+}
+
+/// A distance from 0 up, fractions allowed (`--tolerance 0.5`), said so when it is not.
+fn distance(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(value) if value >= 0.0 && value.is_finite() => Ok(value),
+        _ => Err("must be a number from 0 up, e.g. 0.5".to_string()),
+    }
+}
+
+/// A share from 0 to 1, said so when it is not (`--threshold 2`).
+fn share(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(value) if (0.0..=1.0).contains(&value) => Ok(value),
+        _ => Err("must be a number from 0 to 1, e.g. 0.1".to_string()),
+    }
 }

@@ -10,10 +10,11 @@
 //! - [`gif`]: the animated GIF, streamed out.
 //! - [`plot`]: height, speed and energy of the run against frame, as SVG or PNG.
 //!
-//! At the top, three commands are peers that never import each other: [`run`] (the main
+//! At the top, four commands are peers that never import each other: [`run`] (the main
 //! command) ties the stages together, [`compare`] runs one scene by several methods side by
 //! side against a reference, [`sweep`] runs it once per value of one setting and tiles the
-//! runs into one GIF. Under all three, [`job`] does what they share: it opens and commits the
+//! runs into one GIF, [`check`] grades a learner's GIF, PNG or trajectory against the scene.
+//! Under all four, [`job`] does what they share: it opens and commits the
 //! outputs, checks for a stop, shows the progress and sums up what was written. [`budget`]
 //! works out before the first frame what a scene will cost, [`output`] makes files appear
 //! whole or not at all and only where a file belongs, [`stop`] ends a run cleanly on a
@@ -21,6 +22,7 @@
 //! [`cli`] reads the command line and [`messages`] says what went wrong in one line.
 
 pub mod budget;
+pub mod check;
 pub mod cli;
 pub mod compare;
 pub mod gif;

@@ -50,9 +50,12 @@ pub struct Failure {
 }
 
 impl Failure {
-    /// Prints the line and gives the exit code.
+    /// Prints the line (if any: `check` has said what it found already) and gives the exit
+    /// code.
     pub fn report(self) -> ExitCode {
-        eprintln!("{}", self.line);
+        if !self.line.is_empty() {
+            eprintln!("{}", self.line);
+        }
         ExitCode::from(self.code)
     }
 

@@ -301,7 +301,7 @@ fn the_cycle_finder_finds_a_cycle() {
 }
 
 /// The commands that run a scene: peers above the job driver, which does what they share.
-const COMMANDS: [&str; 3] = ["run", "compare", "sweep"];
+const COMMANDS: [&str; 4] = ["run", "compare", "sweep", "check"];
 
 #[test]
 fn the_commands_are_peers_that_never_import_each_other() {
@@ -315,7 +315,7 @@ fn the_commands_are_peers_that_never_import_each_other() {
             let theirs = command_of(other);
             assert!(
                 theirs.is_none_or(|theirs| theirs == own),
-                "{module} imports {other}: run, compare and sweep share only what src/job/ does"
+                "{module} imports {other}: run, compare, sweep and check share only what src/job/ does"
             );
         }
     }

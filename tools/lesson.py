@@ -14,7 +14,9 @@ oldest first, fading and shrinking, then the ball). It needs Pillow only
     lesson.py bless                         regenerate the tests' data from Pillow's pictures
 
 `gif`, `trajectory` and `frames` take `--scene scenes/NAME.toml` to use a single-ball scene's
-constants instead of the lesson's. `bless` rewrites, on purpose only:
+constants instead of the lesson's, `--frames N` to stop after N frames, and `--pitfall NAME`
+to make one of the lesson's mistakes on purpose (the names `bouncing_ball check` reports:
+src/check/pitfalls.rs), for grading tests. `bless` rewrites, on purpose only:
     tests/golden/*.png               chosen frames of lesson, elastic, heavy and moon
     tests/data/script_frames.txt     CRC-32 of every RGB frame of those four scenes
     tests/data/pillow_circles.txt    pixels Pillow fills for random float circles
@@ -58,55 +60,86 @@ GOLDEN_FRAMES = {
 }
 
 
+# The lesson's mistakes, made on purpose with --pitfall (the names src/check/pitfalls.rs gives).
+PITFALLS = ["nothing-moves", "no-clamp", "gravity-twice", "gravity-at-bounce", "position-first",
+            "trail-before-move", "trail-over-ball"]
+
+
 class Ball:
-    def __init__(self, k):
+    def __init__(self, k, pitfall=None):
         self.k = k
         self.x, self.y = k["START"]
         self.vx, self.vy = k["INITIAL_VEL"]
         self.radius = k["RADIUS"]
         self.trail = []
+        self.pitfall = pitfall
 
     def step(self):
-        k = self.k
-        self.vy += k["GRAVITY"]
+        """The lesson's step; each `p ==` line is a mistake made only when asked for."""
+        k, p = self.k, self.pitfall
+        if p == "nothing-moves":
+            return self.remember()
+        if p == "trail-before-move":
+            self.remember()
+        if p != "position-first":
+            self.vy += k["GRAVITY"]
+        if p == "gravity-twice":
+            self.vy += k["GRAVITY"]
         self.x += self.vx
         self.y += self.vy
+        if p == "position-first":
+            self.vy += k["GRAVITY"]
+        clamp = p != "no-clamp"
+        kick = k["GRAVITY"] if p == "gravity-at-bounce" else 0.0
         if self.x - self.radius < 0:
-            self.x = self.radius
+            if clamp:
+                self.x = self.radius
             self.vx = -self.vx * k["BOUNCE_DAMPING"]
         elif self.x + self.radius > k["WIDTH"]:
-            self.x = k["WIDTH"] - self.radius
+            if clamp:
+                self.x = k["WIDTH"] - self.radius
             self.vx = -self.vx * k["BOUNCE_DAMPING"]
         if self.y - self.radius < 0:
-            self.y = self.radius
-            self.vy = -self.vy * k["BOUNCE_DAMPING"]
+            if clamp:
+                self.y = self.radius
+            self.vy = -self.vy * k["BOUNCE_DAMPING"] + kick
         elif self.y + self.radius > k["HEIGHT"]:
-            self.y = k["HEIGHT"] - self.radius
-            self.vy = -self.vy * k["BOUNCE_DAMPING"]
+            if clamp:
+                self.y = k["HEIGHT"] - self.radius
+            self.vy = -self.vy * k["BOUNCE_DAMPING"] + kick
+        if p != "trail-before-move":
+            self.remember()
+
+    def remember(self):
         self.trail.append((self.x, self.y))
-        if len(self.trail) > k["TRAIL_LEN"]:
+        if len(self.trail) > self.k["TRAIL_LEN"]:
             self.trail.pop(0)
 
 
 def draw(ball):
-    """One RGB frame: the trail oldest first, fading and shrinking, then the ball on top."""
+    """One RGB frame: the trail oldest first, fading and shrinking, then the ball on top
+    (under it, with --pitfall trail-over-ball)."""
     k = ball.k
     img = Image.new("RGB", (k["WIDTH"], k["HEIGHT"]), k["BACKGROUND"])
     d = ImageDraw.Draw(img)
+    r = ball.radius
+    draw_ball = lambda: d.ellipse([ball.x - r, ball.y - r, ball.x + r, ball.y + r], fill=k["BALL_COLOUR"])
+    if ball.pitfall == "trail-over-ball":
+        draw_ball()
     n = len(ball.trail)
     for i, (tx, ty) in enumerate(ball.trail):
         fade = (i + 1) / n
         colour = tuple(int(c * fade) for c in k["TRAIL_COLOUR"])
-        r = ball.radius * fade
-        d.ellipse([tx - r, ty - r, tx + r, ty + r], fill=colour)
-    r = ball.radius
-    d.ellipse([ball.x - r, ball.y - r, ball.x + r, ball.y + r], fill=k["BALL_COLOUR"])
+        tr = ball.radius * fade
+        d.ellipse([tx - tr, ty - tr, tx + tr, ty + tr], fill=colour)
+    if ball.pitfall != "trail-over-ball":
+        draw_ball()
     return img
 
 
-def frames(k):
+def frames(k, pitfall=None):
     """Every frame of the run, each drawn right after its step."""
-    ball = Ball(k)
+    ball = Ball(k, pitfall)
     for _ in range(k["FRAMES"]):
         ball.step()
         yield draw(ball)
@@ -142,27 +175,30 @@ def scene_constants(path):
     )
 
 
-def constants(scene):
-    return scene_constants(scene) if scene else LESSON
+def constants(scene, frames=None):
+    k = dict(scene_constants(scene) if scene else LESSON)
+    if frames is not None:
+        k["FRAMES"] = frames
+    return k
 
 
-def write_gif(k, out):
+def write_gif(k, out, pitfall=None):
     """What the lesson's script writes: the animated GIF and the last frame as a PNG."""
-    images = list(frames(k))
+    images = list(frames(k, pitfall))
     images[0].save(out / "bouncing_ball.gif", save_all=True, append_images=images[1:],
                    duration=k["FRAME_MS"], loop=0)
     images[-1].save(out / "bouncing_ball.png")
 
 
-def print_trajectory(k):
-    ball = Ball(k)
+def print_trajectory(k, pitfall=None):
+    ball = Ball(k, pitfall)
     for _ in range(k["FRAMES"]):
         ball.step()
         print(repr(ball.x), repr(ball.y), repr(ball.vx), repr(ball.vy))
 
 
-def write_frames(k, out, wanted, prefix="frame"):
-    for n, img in enumerate(frames(k)):
+def write_frames(k, out, wanted, prefix="frame", pitfall=None):
+    for n, img in enumerate(frames(k, pitfall)):
         if n in wanted:
             img.save(out / f"{prefix}_{n:03}.png")
 
@@ -229,6 +265,8 @@ def main():
     for name in ("gif", "trajectory", "frames"):
         c = sub.add_parser(name)
         c.add_argument("--scene", help="a single-ball scene file (scenes/NAME.toml)")
+        c.add_argument("--frames", type=int, help="how many frames (default: the scene's)")
+        c.add_argument("--pitfall", choices=PITFALLS, help="make one of the lesson's mistakes")
         if name == "gif":
             c.add_argument("out", nargs="?", default=".", type=Path)
         if name == "frames":
@@ -242,11 +280,11 @@ def main():
             print(f"error: lesson.py gif {a.out}: not a folder; give the folder to write "
                   "bouncing_ball.gif and bouncing_ball.png into", file=sys.stderr)
             sys.exit(2)
-        write_gif(constants(a.scene), a.out)
+        write_gif(constants(a.scene, a.frames), a.out, a.pitfall)
     elif a.command == "trajectory":
-        print_trajectory(constants(a.scene))
+        print_trajectory(constants(a.scene, a.frames), a.pitfall)
     elif a.command == "frames":
-        write_frames(constants(a.scene), a.out, set(a.n))
+        write_frames(constants(a.scene, a.frames), a.out, set(a.n), pitfall=a.pitfall)
     else:
         bless()
 

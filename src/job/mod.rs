@@ -1,6 +1,6 @@
-//! The driver under every command that runs a scene (the main command, `compare`, `sweep`):
-//! what they share, written once. A [`Job`] is built once from the command line and holds
-//! where the scene came from, the budget, the stop flag, whether to talk on stderr (warnings
+//! The driver under every command that runs a scene (the main command, `compare`, `sweep`,
+//! `check`): what they share, written once. A [`Job`] is built once from the command line
+//! and holds where the scene came from, the budget, the stop flag, whether to talk on stderr (warnings
 //! and a progress bar) and the list of outputs. A command uses it in this order:
 //!
 //! 1. [`Job::check`] before any work, then [`Job::open`]: every output path is checked, each

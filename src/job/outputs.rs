@@ -14,6 +14,8 @@ pub enum OutputKind {
     Trace,
     Plot,
     Table,
+    /// `check --diff`: expected | theirs | difference.
+    Diff,
 }
 
 impl OutputKind {
@@ -25,6 +27,7 @@ impl OutputKind {
             OutputKind::Trace => "--trace",
             OutputKind::Plot => "--plot",
             OutputKind::Table => "--table",
+            OutputKind::Diff => "--diff",
         }
     }
 }
@@ -42,7 +45,7 @@ impl Target {
         let (flag, path) = (self.kind.flag(), self.path.as_path());
         match self.kind {
             OutputKind::Gif => Output::picture(flag, path, "gif"),
-            OutputKind::Png => Output::picture(flag, path, "png"),
+            OutputKind::Png | OutputKind::Diff => Output::picture(flag, path, "png"),
             OutputKind::Trace => Output::stream(flag, path),
             OutputKind::Plot | OutputKind::Table => Output::file(flag, path),
         }

@@ -122,6 +122,15 @@ impl Simulation {
         }
     }
 
+    /// The lesson's gravity and walls, if every ball moves by the lesson's own step
+    /// ([`Ball::step`]): then a variant of that step (a learner's mistake) can move them too.
+    pub fn lesson_step(&self) -> Option<(f64, Walls)> {
+        match &self.stepper {
+            Stepper::Lesson { gravity, walls } => Some((*gravity, *walls)),
+            _ => None,
+        }
+    }
+
     /// Counts the lesson's steps, and the gravity and walls they applied (with the
     /// `work-tally` feature; see `super::work`).
     fn tally_lesson_steps(&self) {

@@ -24,6 +24,6 @@ pub mod tile;
 
 pub use palette::IndexedFrame;
 pub use palette::Palette;
-pub use png::write_png;
+pub use png::{write_png, write_rgb_png};
 pub use raster::{to_rgb, Renderer};
 pub use redraw::{Canvas, Damage};

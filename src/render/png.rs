@@ -1,8 +1,8 @@
-//! The still picture: one indexed frame written as an RGB PNG.
+//! The still picture: one indexed frame written as an RGB PNG; or any RGB picture.
 
 use std::io::{self, Write};
 
-use image::ImageEncoder;
+use image::{ImageEncoder, RgbImage};
 
 use super::palette::IndexedFrame;
 use super::palette::Palette;
@@ -10,7 +10,11 @@ use super::raster::to_rgb;
 
 /// Writes `frame` as an RGB PNG.
 pub fn write_png(out: impl Write, frame: &IndexedFrame, palette: &Palette) -> io::Result<()> {
-    let rgb = to_rgb(frame, palette);
+    write_rgb_png(out, &to_rgb(frame, palette))
+}
+
+/// Writes `rgb` as a PNG.
+pub fn write_rgb_png(out: impl Write, rgb: &RgbImage) -> io::Result<()> {
     image::codecs::png::PngEncoder::new(out)
         .write_image(
             rgb.as_raw(),

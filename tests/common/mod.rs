@@ -7,6 +7,7 @@ pub mod process;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use bouncing_ball::check::animation::lzw_indices;
 use bouncing_ball::render::{to_rgb, Renderer};
 use bouncing_ball::{BallSpec, Scene};
 use image::RgbImage;
@@ -80,10 +81,8 @@ impl DecodedGif {
 /// Decodes a GIF, compositing each frame over the previous one (disposal Keep and
 /// transparency), so tests see exactly what a viewer shows.
 ///
-/// The gif crate reads the blocks, but its own pixel decoding rejects valid interlaced frames
-/// with rows of a few odd bytes ("image truncated", image-rs/image-gif#232, a weezl 0.1 bug;
-/// browsers, Pillow, ffmpeg and ImageMagick read them). So each frame's LZW data is decoded
-/// here with weezl in one piece and its rows put back in order.
+/// The gif crate reads the blocks; each frame's pixels are decoded by the library's
+/// `lzw_indices` (the gif crate's own pixel decoding rejects some valid interlaced frames).
 pub fn decode_gif(path: &Path) -> DecodedGif {
     let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("open {}: {e}", path.display()));
     let mut options = gif::DecodeOptions::new();
@@ -94,7 +93,9 @@ pub fn decode_gif(path: &Path) -> DecodedGif {
     let mut canvas = RgbImage::new(width, height);
     let (mut frames, mut delays_cs) = (Vec::new(), Vec::new());
     while let Some(frame) = decoder.read_next_frame().expect("a valid GIF frame") {
-        let pixels = frame_pixels(frame);
+        let (width, height) = (u32::from(frame.width), u32::from(frame.height));
+        let pixels = lzw_indices(&frame.buffer, width, height, frame.interlaced)
+            .expect("a whole frame of pixels");
         let palette = frame
             .palette
             .clone()
@@ -121,28 +122,6 @@ pub fn decode_gif(path: &Path) -> DecodedGif {
         delays_cs,
         repeat: decoder.repeat(),
     }
-}
-
-/// A frame's indices in row order, from its LZW data (`frame.buffer` with frame decoding
-/// skipped: the minimum code size, then the codes).
-fn frame_pixels(frame: &gif::Frame) -> Vec<u8> {
-    let (&code_size, codes) = frame.buffer.split_first().expect("LZW data");
-    let mut decoder = weezl::decode::Decoder::new(weezl::BitOrder::Lsb, code_size);
-    let stored = decoder.decode(codes).expect("valid LZW data");
-    let (width, height) = (usize::from(frame.width), usize::from(frame.height));
-    assert_eq!(stored.len(), width * height, "a whole frame of pixels");
-    if !frame.interlaced {
-        return stored;
-    }
-    let order = [(0, 8), (4, 8), (2, 4), (1, 2)]
-        .into_iter()
-        .flat_map(|(first, step)| (first..height).step_by(step));
-    let mut pixels = vec![0; width * height];
-    for (stored_row, row) in order.enumerate() {
-        pixels[row * width..(row + 1) * width]
-            .copy_from_slice(&stored[stored_row * width..(stored_row + 1) * width]);
-    }
-    pixels
 }
 
 /// Where tests write what they produce (under the target dir, never beside the sources).
