@@ -26,11 +26,12 @@ fn only_a_run_projected_past_a_second_gets_a_progress_bar() {
 #[test]
 fn compare_shows_a_progress_bar_on_a_terminal_and_none_in_a_pipe() {
     let dir = tempfile::tempdir().expect("a temporary folder");
-    let args = ["compare", "-p", "many", "--frames", "600"];
+    // About 4 s on an idle 2-core machine: long enough for the bar whatever the load.
+    let args = ["compare", "-p", "many", "--frames", "5000"];
     let on_terminal = terminal::stderr_of(dir.path(), &args);
     assert!(
         on_terminal.contains("frames,") && on_terminal.contains("left"),
-        "a 2-second compare on a terminal should draw the bar, drew: {on_terminal:?}"
+        "a 4-second compare on a terminal should draw the bar, drew: {on_terminal:?}"
     );
     let piped = std::process::Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
         .args(args)
@@ -74,6 +75,8 @@ mod terminal {
             .expect("the terminal's side");
         let mut child = Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
             .args(args)
+            // As a person's terminal says what it is.
+            .env("TERM", "xterm")
             .current_dir(dir)
             .stdout(Stdio::null())
             .stderr(side)
