@@ -256,11 +256,15 @@ impl Cli {
             line: format!("error: cannot watch for Ctrl-C: {error}"),
             code: 1,
         })?;
-        single_dash_long_flag(&lesson)?;
-        let parsed = command(&lesson).try_get_matches().and_then(|matches| {
-            refuse_main_flags_before_a_subcommand(&matches)?;
-            Args::from_arg_matches(&matches)
-        });
+        // Built once: read for the flags' names, then parsing with it.
+        let mut clap_command = command(&lesson);
+        single_dash_long_flag(&clap_command)?;
+        let parsed = clap_command
+            .try_get_matches_from_mut(std::env::args_os())
+            .and_then(|matches| {
+                refuse_main_flags_before_a_subcommand(&matches)?;
+                Args::from_arg_matches(&matches)
+            });
         let mut args = match parsed {
             Ok(args) => args,
             Err(error) if shows(&error) => {
@@ -271,7 +275,7 @@ impl Cli {
                     stop,
                 })
             }
-            Err(error) => return Err(refused(error, &lesson)),
+            Err(error) => return Err(refused(error, &clap_command)),
         };
         let run = std::mem::take(&mut args.run);
         let command = match args.command.take() {
@@ -493,8 +497,8 @@ impl Default for RunArgs {
 
 /// clap's error in one line, with a hint where the mistake is a common one: a sweep's values
 /// separated by spaces (`damping=0.5 1.0`).
-fn refused(error: clap::Error, lesson: &Scene) -> Failure {
-    let subcommand = typed_subcommand(lesson);
+fn refused(error: clap::Error, command: &clap::Command) -> Failure {
+    let subcommand = typed_subcommand(command);
     let unexpected = match error.get(ContextKind::InvalidArg) {
         Some(ContextValue::String(word)) => word.clone(),
         _ => String::new(),
@@ -511,13 +515,14 @@ fn refused(error: clap::Error, lesson: &Scene) -> Failure {
 
 /// Refuses a long flag typed with one dash (`-damping 0.5`), which clap would read as the
 /// short `-d` with the value `amping`.
-fn single_dash_long_flag(lesson: &Scene) -> Result<(), Failure> {
-    let command = command(lesson);
-    let long_flags: Vec<&str> = std::iter::once(&command)
+fn single_dash_long_flag(command: &clap::Command) -> Result<(), Failure> {
+    let long_flags: Vec<&str> = std::iter::once(command)
         .chain(command.get_subcommands())
         .flat_map(|c| c.get_arguments().filter_map(|arg| arg.get_long()))
         .collect();
-    for word in std::env::args().skip(1) {
+    // Read lossily: a path need not be Unicode (std::env::args would panic on one).
+    for word in std::env::args_os().skip(1) {
+        let word = word.to_string_lossy();
         let Some(name) = word.strip_prefix('-').filter(|name| !name.starts_with('-')) else {
             continue;
         };
@@ -532,11 +537,11 @@ fn single_dash_long_flag(lesson: &Scene) -> Result<(), Failure> {
 }
 
 /// The subcommand typed on the command line, if any: the first word that names one.
-fn typed_subcommand(lesson: &Scene) -> Option<String> {
-    let command = command(lesson);
+fn typed_subcommand(command: &clap::Command) -> Option<String> {
     let names: Vec<&str> = command.get_subcommands().map(|c| c.get_name()).collect();
-    std::env::args()
+    std::env::args_os()
         .skip(1)
+        .map(|word| word.to_string_lossy().into_owned())
         .find(|word| names.contains(&word.as_str()))
 }
 

@@ -664,3 +664,26 @@ fn the_trace_writes_the_shortest_number_that_reads_back_with_an_exponent_only_wh
     // x moves by 1e-20 from 40 (lost to rounding), vx stays tiny, y and vy are plain.
     assert_eq!(row, "0,0,40,101,1e-20,0.5", "the trace row");
 }
+
+/// A file name need not be Unicode on Unix: the command line reads it as the system gives it.
+#[cfg(unix)]
+#[test]
+fn an_output_name_that_is_not_unicode_is_written_as_given() {
+    use std::os::unix::ffi::OsStrExt;
+    let dir = temp_dir();
+    let name = std::ffi::OsStr::from_bytes(b"odd\xff.gif");
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
+        .arg("-o")
+        .arg(name)
+        .args(["-n", "3", "-q"])
+        .current_dir(dir.path())
+        .output()
+        .expect("the binary runs");
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        dir.path().join(name).is_file(),
+        "the GIF under its own name"
+    );
+    let still = std::ffi::OsStr::from_bytes(b"odd\xff.png");
+    assert!(dir.path().join(still).is_file(), "and the still beside it");
+}
