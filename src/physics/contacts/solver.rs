@@ -825,11 +825,12 @@ fn copy_back(copy: &Body, ball: &mut Ball, walls: Option<&Walls>, floors: &[Floo
     let from = ball.position();
     let (position, velocity) = (copy.position, copy.velocity);
     (ball.x, ball.y, ball.vx, ball.vy) = (position.x, position.y, velocity.x, velocity.y);
-    if let Some(walls) = walls {
-        ball.keep_inside(walls);
-    }
     for floor in floors {
         floor.undo_crossing(ball, from);
+    }
+    // Last: whatever put it back, the box holds it.
+    if let Some(walls) = walls {
+        ball.keep_inside(walls);
     }
 }
 
