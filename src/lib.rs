@@ -10,7 +10,7 @@
 //! - [`gif`]: the animated GIF, streamed out.
 //! - [`plot`]: height, speed and energy of the run against frame, as SVG or PNG.
 //!
-//! At the top, four commands are peers that never import each other: [`run`] (the main
+//! At the top, four commands are peers that never import each other: [`run`](mod@run) (the main
 //! command) ties the stages together, [`compare`] runs one scene by several methods side by
 //! side against a reference, [`sweep`] runs it once per value of one setting and tiles the
 //! runs into one GIF, [`check`] grades a learner's GIF, PNG or trajectory against the scene.

@@ -12,10 +12,10 @@
 //!
 //! This module holds the policy (the budget, the refusals, the warnings); the models are its
 //! submodules:
-//! - [`memory`]: the memory a scene needs at most, from the scene alone;
-//! - [`pilot`]: the pilot run, which measures what a run does (its activity);
-//! - [`cost`]: the costs fitted to measured runs, which turn activity into time and GIF size;
-//! - [`tiles`]: a sweep's panels on one canvas.
+//! - `memory`: the memory a scene needs at most, from the scene alone;
+//! - `pilot`: the pilot run, which measures what a run does (its activity);
+//! - `cost`: the costs fitted to measured runs, which turn activity into time and GIF size;
+//! - `tiles`: a sweep's panels on one canvas.
 
 mod cost;
 mod memory;

@@ -19,7 +19,7 @@ use super::methods::Method;
 /// so the clock's resolution and the cost of reading it do not count.
 const REPETITION: Duration = Duration::from_millis(5);
 /// Repetitions timed per method, at most; fewer once [`TIMING_BUDGET`] per method is spent,
-/// but never fewer than [`MIN_REPETITIONS`].
+/// but never fewer than `MIN_REPETITIONS`.
 const MAX_REPETITIONS: usize = 9;
 const MIN_REPETITIONS: usize = 3;
 const TIMING_BUDGET: Duration = Duration::from_millis(300);
@@ -91,9 +91,9 @@ pub fn time_all(scene: &Scene, methods: &[Method]) -> Vec<Timing> {
 }
 
 /// How long [`time_all`] takes when one run of each method takes `runs` seconds: a first run
-/// each, then rounds in which every method runs for a repetition (at least [`REPETITION`]),
-/// as many rounds as fit in the timing budget, but at least enough for [`MIN_REPETITIONS`]
-/// and at most [`MAX_REPETITIONS`].
+/// each, then rounds in which every method runs for a repetition (at least `REPETITION`),
+/// as many rounds as fit in the timing budget, but at least enough for `MIN_REPETITIONS`
+/// and at most `MAX_REPETITIONS`.
 pub fn timing_seconds(runs: &[f64]) -> f64 {
     let repetition = REPETITION.as_secs_f64();
     let round: f64 = runs.iter().map(|&run| run.max(repetition)).sum();

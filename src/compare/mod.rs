@@ -11,7 +11,7 @@
 //! - [`table`]: the numbers on standard output, and as CSV (`--table`).
 //! - [`plot`]: the work-precision diagram (`--plot`): error against time, log-log.
 //!
-//! As [`crate::run`] does, it refuses everything it can before any work, writes every file
+//! As [`crate::run`](mod@crate::run) does, it refuses everything it can before any work, writes every file
 //! beside its target and renames them into place only at the end. The GIF holds no timing,
 //! so it is the same bytes on every run; the table and the plot hold the timings.
 
