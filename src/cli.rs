@@ -16,7 +16,9 @@ use crate::check::pixels::Tolerance;
 use crate::check::{self, Outcome};
 use crate::compare::methods::{self, MethodList};
 use crate::job::{Job, OutputKind, Summary};
-use crate::messages::{flag, refuse, seconds, summary_line, whole_number, Failure};
+use crate::messages::{
+    distance, flag, refuse, seconds, share, summary_line, whole_number, Failure,
+};
 use crate::scene::file::Canvas;
 use crate::scene::{self, preset_names, Overrides, Scene, SceneFileError};
 use crate::stop::Stop;
@@ -337,22 +339,14 @@ impl Cli {
     /// The main command: the scene, its GIF and still, and a trace and a plot if asked for.
     fn run_scene(&self, args: &Args) -> Result<(), Failure> {
         let scene = args.scene.scene(&self.lesson).map_err(Failure::input)?;
-        let mut job = args
+        let job = args
             .skip
-            .pictures(self.job(&args.scene), &args.gif, args.png.as_ref());
-        if let Some(path) = &args.trace {
-            job = job.with(OutputKind::Trace, path);
-        }
-        if let Some(path) = args.plot.as_ref().or(scene.plot.as_ref()) {
-            job = job.with(OutputKind::Plot, path);
-        }
+            .pictures(self.job(&args.scene), &args.gif, args.png.as_ref())
+            .with_optional(OutputKind::Trace, args.trace.as_ref())
+            .with_optional(OutputKind::Plot, args.plot.as_ref().or(scene.plot.as_ref()));
         nothing_left_out(&job, "--trace or --plot")?;
-        let summary = crate::run(&scene, &job).map_err(|error| {
-            Failure::of_run(&error, |name| match name {
-                "plot" => args.plot.is_some(),
-                setting => args.scene.settings.is_typed(setting),
-            })
-        })?;
+        let summary = crate::run(&scene, &job)
+            .map_err(|error| Failure::of_run(&error, args.scene.typed(args.plot.is_some())))?;
         self.say(&job, "", &summary);
         Ok(())
     }
@@ -366,22 +360,14 @@ impl Cli {
             }
         }
         let scene = args.scene.scene(&self.lesson).map_err(Failure::input)?;
-        let mut job = args
+        let job = args
             .skip
-            .pictures(self.job(&args.scene), &args.gif, args.png.as_ref());
-        if let Some(path) = &args.table {
-            job = job.with(OutputKind::Table, path);
-        }
-        if let Some(path) = &args.plot {
-            job = job.with(OutputKind::Plot, path);
-        }
+            .pictures(self.job(&args.scene), &args.gif, args.png.as_ref())
+            .with_optional(OutputKind::Table, args.table.as_ref())
+            .with_optional(OutputKind::Plot, args.plot.as_ref());
         nothing_left_out(&job, "--table or --plot")?;
-        let done = compare::compare(&scene, &args.methods, &job).map_err(|error| {
-            Failure::of_run(&error, |name| match name {
-                "plot" => args.plot.is_some(),
-                setting => args.scene.settings.is_typed(setting),
-            })
-        })?;
+        let done = compare::compare(&scene, &args.methods, &job)
+            .map_err(|error| Failure::of_run(&error, args.scene.typed(args.plot.is_some())))?;
         self.say(&job, &done.table, &done.summary);
         Ok(())
     }
@@ -390,10 +376,9 @@ impl Cli {
     /// and the exit code of the worst: 0 match, 1 differs, 2 trouble.
     fn check(&self, args: &CheckArgs) -> Result<(), Failure> {
         let scene = args.scene.scene(&self.lesson).map_err(Failure::input)?;
-        let mut job = self.job(&args.scene);
-        if let Some(path) = &args.diff {
-            job = job.with(OutputKind::Diff, path);
-        }
+        let job = self
+            .job(&args.scene)
+            .with_optional(OutputKind::Diff, args.diff.as_ref());
         let options = check::Options {
             pixels: Tolerance {
                 threshold: args.threshold,
@@ -607,6 +592,15 @@ impl SceneArgs {
         Ok(scene)
     }
 
+    /// Whether the user typed the setting `name` (`plot`: whether `plot_typed`), to name a
+    /// refused value as they know it.
+    fn typed(&self, plot_typed: bool) -> impl Fn(&str) -> bool + '_ {
+        move |name| match name {
+            "plot" => plot_typed,
+            setting => self.settings.is_typed(setting),
+        }
+    }
+
     /// The seed of everything random: as typed, or 1.
     fn seed(&self) -> u64 {
         self.seed.unwrap_or(1)
@@ -647,20 +641,4 @@ fn command(lesson: &Scene) -> clap::Command {
         .mut_subcommand("sweep", defaults)
         .mut_subcommand("compare", |command| per_method(defaults(command)))
         .mut_subcommand("check", defaults)
-}
-
-/// A distance from 0 up, fractions allowed (`--tolerance 0.5`), said so when it is not.
-fn distance(text: &str) -> Result<f64, String> {
-    match text.parse::<f64>() {
-        Ok(value) if value >= 0.0 && value.is_finite() => Ok(value),
-        _ => Err("must be a number from 0 up, e.g. 0.5".to_string()),
-    }
-}
-
-/// A share from 0 to 1, said so when it is not (`--threshold 2`).
-fn share(text: &str) -> Result<f64, String> {
-    match text.parse::<f64>() {
-        Ok(value) if (0.0..=1.0).contains(&value) => Ok(value),
-        _ => Err("must be a number from 0 to 1, e.g. 0.1".to_string()),
-    }
 }

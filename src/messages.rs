@@ -195,11 +195,26 @@ pub fn whole_number(text: &str) -> Result<u64, String> {
         .map_err(|_| format!("must be a whole number from 0 to {}", u64::MAX))
 }
 
-/// A number of seconds from 0 up, fractions allowed (`--time-budget 0.5`), said so when it
-/// is not.
-pub fn seconds(text: &str) -> Result<f64, String> {
+/// A finite number from `low` to `high`, or `allowed` (what the flag takes) when it is not.
+fn number_in(text: &str, low: f64, high: f64, allowed: &str) -> Result<f64, String> {
     match text.parse::<f64>() {
-        Ok(value) if value.is_finite() && value >= 0.0 => Ok(value),
-        _ => Err("must be a number of seconds from 0 up, e.g. 0.5 or 3600".to_string()),
+        Ok(value) if value.is_finite() && (low..=high).contains(&value) => Ok(value),
+        _ => Err(allowed.to_string()),
     }
+}
+
+/// A number of seconds from 0 up, fractions allowed (`--time-budget 0.5`).
+pub fn seconds(text: &str) -> Result<f64, String> {
+    let allowed = "must be a number of seconds from 0 up, e.g. 0.5 or 3600";
+    number_in(text, 0.0, f64::MAX, allowed)
+}
+
+/// A distance from 0 up, fractions allowed (`--tolerance 0.5`).
+pub fn distance(text: &str) -> Result<f64, String> {
+    number_in(text, 0.0, f64::MAX, "must be a number from 0 up, e.g. 0.5")
+}
+
+/// A share from 0 to 1 (`--threshold 0.1`).
+pub fn share(text: &str) -> Result<f64, String> {
+    number_in(text, 0.0, 1.0, "must be a number from 0 to 1, e.g. 0.1")
 }

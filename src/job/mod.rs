@@ -107,6 +107,14 @@ impl Job {
         self
     }
 
+    /// The job with one more output if `path` is given (a flag the user may leave out).
+    pub fn with_optional(self, kind: OutputKind, path: Option<&PathBuf>) -> Job {
+        match path {
+            Some(path) => self.with(kind, path),
+            None => self,
+        }
+    }
+
     /// Where the output of this kind goes, if the job writes one.
     pub fn path(&self, kind: OutputKind) -> Option<&Path> {
         let target = self.outputs.iter().find(|t| t.kind == kind);
