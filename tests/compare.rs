@@ -22,8 +22,7 @@ fn compare_command(dir: &Path, args: &[&str]) -> Command {
 
 fn run_in(dir: &Path, args: &[&str]) -> Output {
     let _shared = RUNS.read().unwrap_or_else(|poisoned| poisoned.into_inner());
-    let output = compare_command(dir, args).output();
-    output.expect("the binary runs")
+    common::output_of(&mut compare_command(dir, args))
 }
 
 fn temp_dir() -> tempfile::TempDir {

@@ -4,19 +4,11 @@
 mod common;
 
 use std::path::Path;
-use std::process::{Command, Output};
 
 use bouncing_ball::render::tile::{GAP, LABEL_STRIP};
-use common::decode_gif;
+use common::{decode_gif, run_in};
 use image::RgbImage;
 
-fn run_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
 
 fn succeeds(dir: &Path, args: &[&str]) {
     let output = run_in(dir, args);

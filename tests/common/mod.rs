@@ -203,11 +203,30 @@ pub fn white_ball(x: f64, y: f64, vx: f64, vy: f64, radius: f64) -> BallSpec {
 
 /// The program, run in `dir` with `args`.
 pub fn run_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
+    output_of(
+        Command::new(env!("CARGO_BIN_EXE_bouncing_ball"))
+            .args(args)
+            .current_dir(dir),
+    )
+}
+
+/// What `command` printed and how it exited. Wine (the Windows leg of CI) now and then fails
+/// to start a process at all, with ERROR_INTERNAL_ERROR (1359), when many tests start
+/// processes at once; the program never ran then, so starting it again is safe. Any other
+/// failure to start is the test's failure.
+pub fn output_of(command: &mut Command) -> Output {
+    const WINE_INTERNAL_ERROR: i32 = 1359;
+    let mut tries = 0;
+    loop {
+        match command.output() {
+            Err(error) if error.raw_os_error() == Some(WINE_INTERNAL_ERROR) && tries < 5 => {
+                tries += 1;
+                eprintln!("starting the program failed ({error}); try {tries} of 5 again");
+                std::thread::sleep(std::time::Duration::from_millis(200));
+            }
+            result => return result.expect("the binary runs"),
+        }
+    }
 }
 
 /// What a run printed on stderr.
