@@ -20,6 +20,22 @@
 //! whole or not at all and only where a file belongs, [`stop`] ends a run cleanly on a
 //! signal, [`trace`] writes the CSV, [`progress`] shows how far a long run is. Above them,
 //! [`cli`] reads the command line and [`messages`] says what went wrong in one line.
+//!
+//! # Example
+//!
+//! The moon preset, simulated and written as a GIF and a still PNG:
+//!
+//! ```
+//! use bouncing_ball::{run, scene, Job};
+//!
+//! let folder = tempfile::tempdir()?;
+//! let gif = folder.path().join("moon.gif");
+//! let moon = scene::preset("moon", 0)?;
+//! let written = run(&moon, &Job::pictures(&gif, folder.path().join("moon.png")))?;
+//! assert_eq!(written.frames, moon.frames);
+//! assert!(std::fs::read(&gif)?.starts_with(b"GIF89a"));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 pub mod budget;
 pub mod check;

@@ -36,7 +36,8 @@ pub struct Stop {
 }
 
 impl Stop {
-    /// A note that the requests in [`STOPPING`] set, instead of ending the process at once.
+    /// Watches for the stop signals (Ctrl-C; on Unix also SIGTERM and SIGHUP): each one
+    /// is noted here instead of ending the process at once.
     pub fn on_signals() -> io::Result<Stop> {
         let stop = Stop::default();
         platform::watch(&stop.request)?;

@@ -356,3 +356,172 @@ fn main_rs_is_the_learners_constants_then_a_short_dispatch() {
         "src/main.rs holds no clap structs and has one exit path"
     );
 }
+
+/// Every `.rs` file under `src/` (main.rs too), with its path and text.
+fn source_files() -> Vec<(String, String)> {
+    fn walk(dir: &Path, out: &mut Vec<(String, String)>) {
+        for entry in fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = fs::read_to_string(&path).unwrap();
+                out.push((path.display().to_string(), text));
+            }
+        }
+    }
+    let mut files = Vec::new();
+    walk(Path::new("src"), &mut files);
+    files.sort();
+    files
+}
+
+/// `text` with comments, strings and character literals blanked to spaces, lines kept, so
+/// that braces can be counted.
+fn braces_only(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    while i < chars.len() {
+        let (c, next) = (chars[i], chars.get(i + 1).copied());
+        let end = match (c, next) {
+            ('/', Some('/')) => (i..chars.len())
+                .find(|&j| chars[j] == '\n')
+                .unwrap_or(chars.len()),
+            ('"', _) => {
+                let mut j = i + 1;
+                while chars[j] != '"' {
+                    j += if chars[j] == '\\' { 2 } else { 1 };
+                }
+                j + 1
+            }
+            // A character literal ('{', '\n'), not a lifetime ('a).
+            ('\'', Some('\\')) => (i + 2..chars.len()).find(|&j| chars[j] == '\'').unwrap() + 1,
+            ('\'', Some(_)) if chars.get(i + 2) == Some(&'\'') => i + 3,
+            _ => {
+                out.push(c);
+                i += 1;
+                continue;
+            }
+        };
+        out.extend(
+            chars[i..end]
+                .iter()
+                .map(|&c| if c == '\n' { '\n' } else { ' ' }),
+        );
+        i = end;
+    }
+    out
+}
+
+/// Each function with a body in `text`: its name and its length in lines, from the `fn`
+/// line to the line of its closing brace.
+fn function_lengths(text: &str) -> Vec<(String, usize)> {
+    let code = braces_only(text);
+    let lines: Vec<&str> = code.lines().collect();
+    let mut found = Vec::new();
+    for (start, line) in lines.iter().enumerate() {
+        let Some(at) = line.find("fn ").filter(|&at| {
+            at == 0
+                || !line.as_bytes()[at - 1].is_ascii_alphanumeric()
+                    && line.as_bytes()[at - 1] != b'_'
+        }) else {
+            continue;
+        };
+        let name: String = line[at + 3..]
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        if name.is_empty() {
+            continue; // `fn(` in a type
+        }
+        // The body opens at the first `{` before any `;` (a declaration without a body).
+        let (mut depth, mut opened) = (0usize, false);
+        'lines: for (end, line) in lines.iter().enumerate().skip(start) {
+            let from = if end == start { at } else { 0 };
+            for c in line[from..].chars() {
+                match c {
+                    ';' if !opened => break 'lines,
+                    '{' => (depth, opened) = (depth + 1, true),
+                    '}' => depth -= 1,
+                    _ => continue,
+                }
+                if opened && depth == 0 {
+                    found.push((name, end - start + 1));
+                    break 'lines;
+                }
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn no_source_file_is_over_700_lines_and_no_function_over_60() {
+    let mut long = Vec::new();
+    for (path, text) in source_files() {
+        let lines = text.lines().count();
+        if lines > 700 {
+            long.push(format!("{path}: {lines} lines (at most 700)"));
+        }
+        for (name, length) in function_lengths(&text) {
+            if length > 60 {
+                long.push(format!("{path}: fn {name} is {length} lines (at most 60)"));
+            }
+        }
+    }
+    assert!(
+        long.is_empty(),
+        "split these by what they do:\n{}",
+        long.join("\n")
+    );
+}
+
+#[test]
+fn the_function_counter_counts_from_the_fn_line_to_its_closing_brace() {
+    let text =
+        "fn a() {\n    let s = \"}\";\n    if x { '{' }\n}\nfn b();\nfn c<'a>(x: &'a str) { x }\n";
+    assert_eq!(
+        function_lengths(text),
+        [("a".to_string(), 4), ("c".to_string(), 1)]
+    );
+}
+
+#[test]
+fn no_two_types_in_the_program_share_a_name() {
+    let mut seen: BTreeMap<String, String> = BTreeMap::new();
+    let mut twice = Vec::new();
+    for (path, text) in source_files() {
+        for line in code(&text).lines() {
+            // Associated types (`type Output = ..` inside an impl) are indented; they name a
+            // trait's slot, not a new idea.
+            let item = line.trim_start();
+            let words: Vec<&str> = item.split_whitespace().collect();
+            let Some(at) = words
+                .iter()
+                .position(|w| ["struct", "enum", "trait", "type"].contains(w))
+            else {
+                continue;
+            };
+            let visibility_only = words[..at].iter().all(|w| w.starts_with("pub"));
+            if !visibility_only || (words[at] == "type" && line.starts_with(' ')) {
+                continue;
+            }
+            let Some(name) = words.get(at + 1).map(|w| {
+                w.chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect::<String>()
+            }) else {
+                continue;
+            };
+            if let Some(first) = seen.insert(name.clone(), path.clone()) {
+                twice.push(format!("{name}: {first} and {path}"));
+            }
+        }
+    }
+    assert!(
+        twice.is_empty(),
+        "one name per idea; these are defined twice:\n{}",
+        twice.join("\n")
+    );
+}

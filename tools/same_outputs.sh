@@ -15,12 +15,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 runs=()
-for preset in lesson elastic no-gravity heavy moon many billiards slope drag pile pyramid; do
+for preset in $(cd "$(dirname "$0")/../scenes" && ls -- *.toml | sed 's/\.toml$//'); do
     runs+=("$preset|--preset $preset")
 done
 for preset in many billiards pile; do
     runs+=("$preset-exact|--preset $preset --collisions exact --integrator velocity-verlet")
     runs+=("$preset-rk4|--preset $preset --integrator rk4 --substeps 3")
+    runs+=("$preset-rk4-exact|--preset $preset --collisions exact --integrator rk4")
 done
 
 differ=0

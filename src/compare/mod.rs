@@ -3,7 +3,7 @@
 //!
 //! - [`methods`]: the methods, as `--methods` spells them (`rk4:4:exact`).
 //! - [`checks`]: what stops a comparison midway (a signal, numbers beyond the finite).
-//! - [`reference`]: what every method is measured against, and how far it converged.
+//! - [`reference`](mod@reference): what every method is measured against, and how far it converged.
 //! - [`estimate`]: how long the whole comparison will take, predicted before any work.
 //! - [`measure`]: the time per ball-frame, the error against the reference, the energy.
 //! - [`draw`]: the GIF's frames: every method in its colour, the reference as outlines, the

@@ -2,7 +2,7 @@
 //!
 //! - [`palette`]: the colour table, built once per scene, with the trail's faded shades.
 //! - [`ellipse`]: solid circles, exactly the pixels Pillow's `ImageDraw.ellipse` fills.
-//! - [`line`]: one-pixel floor segments.
+//! - [`line`](mod@line): one-pixel floor segments.
 //! - [`outline`]: one-pixel circle outlines (where `compare` says a ball should be).
 //! - [`raster`]: draws the trail oldest first, fading and shrinking, then the ball on top.
 //! - [`redraw`]: frame after frame, drawn again only where something changed; [`dirty`]: the
