@@ -5,9 +5,9 @@
 
 mod common;
 
-use bouncing_ball::physics::work::{self, Work};
 use bouncing_ball::physics::{Ball, Integrator, Motion, Walls};
 use bouncing_ball::scene::file as scene_file;
+use bouncing_ball::work::{self, Work};
 use bouncing_ball::{BallSpec, Scene};
 use common::lesson_scene;
 use proptest::prelude::*;

@@ -18,8 +18,8 @@ use super::palette::{
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
 use crate::physics::vec2::Vec2;
-use crate::physics::work::{tally_many, Work};
 use crate::scene::spec::{Rgb, Scene};
+use crate::work::{tally_many, Work};
 
 /// Draws a scene's balls with the scene's colours.
 #[derive(Clone, Debug)]

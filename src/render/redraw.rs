@@ -29,7 +29,7 @@ use super::ellipse::{fill_box, PixelBox};
 use super::palette::{drawn_dots, IndexedFrame};
 use super::raster::Renderer;
 use crate::physics::ball::Ball;
-use crate::physics::work::{tally_many, Work};
+use crate::work::{tally_many, Work};
 
 /// What changed in a frame since the frame before it on the same canvas.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
