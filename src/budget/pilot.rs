@@ -146,7 +146,7 @@ fn pilot(scene: &Scene) -> Vec<Activity> {
         && physics_ns(scene, &physics) < PILOT_NS
     {
         simulation.step();
-        let mut rect = Bounds::EMPTY;
+        let mut rect = CoveringRect::EMPTY;
         let (mut changed, mut redrawn) = (0.0, false);
         for ((ball, spec), was) in simulation.balls().iter().zip(&scene.balls).zip(&mut was) {
             let step = ball.position() - *was;
@@ -234,13 +234,13 @@ fn dots_share(ball: &BallSpec, shrink: bool) -> f64 {
 }
 
 /// A rectangle on the canvas grown to cover balls and their trails.
-struct Bounds {
+struct CoveringRect {
     low: Vec2,
     high: Vec2,
 }
 
-impl Bounds {
-    const EMPTY: Bounds = Bounds {
+impl CoveringRect {
+    const EMPTY: CoveringRect = CoveringRect {
         low: Vec2::new(f64::INFINITY, f64::INFINITY),
         high: Vec2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
     };

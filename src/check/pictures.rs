@@ -11,16 +11,16 @@ use image::RgbImage;
 
 use super::animation::{Animation, Pictures};
 use super::expected::Frames;
-use super::found::{Comparison, First, Trouble};
+use super::found::{Finding, First, Trouble};
 use super::pixels::{diff_picture, difference, Tolerance};
-use super::trajectory::Trajectory;
+use super::trajectory::TrajectoryFile;
 use crate::render::dirty::Rect;
 use crate::scene::Scene;
 
 /// What a learner handed in.
 pub enum Theirs {
     Images(Images),
-    Trajectory(Trajectory),
+    Trajectory(TrajectoryFile),
 }
 
 /// Handed-in pictures.
@@ -68,7 +68,7 @@ impl Theirs {
                 let text = fs::read(path).map_err(Trouble::Read)?;
                 let text = String::from_utf8(text).map_err(|_| Trouble::NotRecognised)?;
                 Ok(Theirs::Trajectory(
-                    Trajectory::parse(&text).ok_or(Trouble::NotRecognised)??,
+                    TrajectoryFile::parse(&text).ok_or(Trouble::NotRecognised)??,
                 ))
             }
         }
@@ -85,7 +85,7 @@ impl Images {
         expected: &mut Frames,
         tolerance: &Tolerance,
         want_picture: bool,
-    ) -> Result<Comparison, Trouble> {
+    ) -> Result<Finding, Trouble> {
         let frame_cs = u64::from(scene.frame_ms / 10).max(1);
         let (count, mut source) = match self {
             Images::Gif(animation) => {
@@ -152,7 +152,7 @@ impl Images {
                 }
             }
         }
-        Ok(Comparison {
+        Ok(Finding {
             frames: count,
             first,
         })

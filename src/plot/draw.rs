@@ -7,7 +7,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::record::{Panel, Recording, Series};
+use super::record::{PlotPanel, Recording, Series};
 
 use crate::physics::maths;
 
@@ -30,8 +30,8 @@ const COLOURS: [RGBColor; 4] = [
 const BOUNCE: RGBColor = RGBColor(170, 170, 170);
 
 /// The panels the recording has, top to bottom.
-fn panels(recording: &Recording) -> Vec<Panel> {
-    let mut panels: Vec<Panel> = recording.series.iter().map(|s| s.panel).collect();
+fn panels(recording: &Recording) -> Vec<PlotPanel> {
+    let mut panels: Vec<PlotPanel> = recording.series.iter().map(|s| s.panel).collect();
     panels.sort();
     panels.dedup();
     panels
@@ -106,7 +106,7 @@ fn tick_label(span: f64) -> impl Fn(&f64) -> String {
 fn draw_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     recording: &Recording,
-    panel: Panel,
+    panel: PlotPanel,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     let (chart_area, legend_area) = area.split_horizontally(WIDTH - LEGEND_WIDTH);
     let in_panel: Vec<(usize, &Series)> = recording

@@ -111,15 +111,16 @@ impl Plot {
 }
 
 /// A plotters drawing area over an RGB buffer, and what drawing on it can fail with.
-pub type Canvas<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
-pub type CanvasError = DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>;
+pub type BitmapArea<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
+pub type BitmapAreaError =
+    DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>;
 
 /// Lets `draw` paint on a white canvas of `size` px and saves it as a PNG at `path`, whole
 /// or not at all: the accuracy study's plots.
 pub fn save_png(
     path: &Path,
     size: (u32, u32),
-    draw: impl FnOnce(&Canvas) -> Result<(), CanvasError>,
+    draw: impl FnOnce(&BitmapArea) -> Result<(), BitmapAreaError>,
 ) -> Result<(), OutputError> {
     let file = AtomicFile::create(path)?;
     write_png(file.file(), size, |root| {
@@ -136,7 +137,7 @@ pub fn save_png(
 pub fn write_png(
     out: impl Write,
     size: (u32, u32),
-    draw: impl FnOnce(&Canvas) -> Result<(), CanvasError>,
+    draw: impl FnOnce(&BitmapArea) -> Result<(), BitmapAreaError>,
 ) -> io::Result<()> {
     use_embedded_font()?;
     let mut rgb = vec![0u8; size.0 as usize * size.1 as usize * 3];

@@ -12,7 +12,7 @@ use crate::scene::Scene;
 
 /// The panel a series is drawn in, top to bottom in this order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Panel {
+pub enum PlotPanel {
     Height,
     Speed,
     Energy,
@@ -20,15 +20,15 @@ pub enum Panel {
     Overlap,
 }
 
-impl Panel {
+impl PlotPanel {
     /// The panel's vertical axis, with units.
     pub fn axis(self) -> &'static str {
         match self {
-            Panel::Height => "height above the floor, px",
-            Panel::Speed => "speed, px/frame",
-            Panel::Energy => "energy per unit mass, px²/frame²",
-            Panel::TotalEnergy => "all balls' energy, px²/frame²",
-            Panel::Overlap => "deepest overlap, px",
+            PlotPanel::Height => "height above the floor, px",
+            PlotPanel::Speed => "speed, px/frame",
+            PlotPanel::Energy => "energy per unit mass, px²/frame²",
+            PlotPanel::TotalEnergy => "all balls' energy, px²/frame²",
+            PlotPanel::Overlap => "deepest overlap, px",
         }
     }
 }
@@ -37,7 +37,7 @@ impl Panel {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Series {
     pub name: &'static str,
-    pub panel: Panel,
+    pub panel: PlotPanel,
     pub values: Vec<f64>,
 }
 
@@ -76,7 +76,7 @@ impl Overlaps {
     }
 }
 
-fn series(name: &'static str, panel: Panel) -> Series {
+fn series(name: &'static str, panel: PlotPanel) -> Series {
     Series {
         name,
         panel,
@@ -91,18 +91,18 @@ impl Recording {
         let one_ball = scene.balls.len() == 1;
         let series = if one_ball {
             vec![
-                series("height", Panel::Height),
-                series("speed", Panel::Speed),
-                series("kinetic + potential", Panel::Energy),
+                series("height", PlotPanel::Height),
+                series("speed", PlotPanel::Speed),
+                series("kinetic + potential", PlotPanel::Energy),
             ]
         } else {
             let mut all = vec![
-                series("kinetic, Σ m·|v|²/2", Panel::TotalEnergy),
-                series("potential, Σ m·g·h", Panel::TotalEnergy),
-                series("kinetic + potential", Panel::TotalEnergy),
+                series("kinetic, Σ m·|v|²/2", PlotPanel::TotalEnergy),
+                series("potential, Σ m·g·h", PlotPanel::TotalEnergy),
+                series("kinetic + potential", PlotPanel::TotalEnergy),
             ];
             if scene.ball_collisions.is_some() {
-                all.push(series("deepest overlap", Panel::Overlap));
+                all.push(series("deepest overlap", PlotPanel::Overlap));
             }
             all
         };

@@ -66,7 +66,7 @@ pub fn preset_names() -> Vec<&'static str> {
 /// A canvas size typed on the command line (`--width 1920`), laid over a scene file's own
 /// before its `[spawn]` places balls, so they fill the canvas the run draws.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Canvas {
+pub struct CanvasSize {
     pub width: Option<u32>,
     pub height: Option<u32>,
 }
@@ -74,11 +74,11 @@ pub struct Canvas {
 /// Reads a scene file (`-`: standard input); `seed` drives any random spawning it asks for.
 /// Only a regular file or standard input, and at most [`MAX_SCENE_BYTES`] of it.
 pub fn load(path: &Path, seed: u64) -> Result<Scene, SceneFileError> {
-    load_on(path, seed, Canvas::default())
+    load_on(path, seed, CanvasSize::default())
 }
 
 /// [`load`], with the balls spawned on `canvas` where it gives a size.
-pub fn load_on(path: &Path, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
+pub fn load_on(path: &Path, seed: u64, canvas: CanvasSize) -> Result<Scene, SceneFileError> {
     let stdin = path.as_os_str() == "-";
     let file = if stdin {
         "standard input".to_string()
@@ -127,11 +127,11 @@ pub fn load_on(path: &Path, seed: u64, canvas: Canvas) -> Result<Scene, SceneFil
 
 /// Loads a bundled preset by name.
 pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
-    preset_on(name, seed, Canvas::default())
+    preset_on(name, seed, CanvasSize::default())
 }
 
 /// [`preset`], with the balls spawned on `canvas` where it gives a size.
-pub fn preset_on(name: &str, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
+pub fn preset_on(name: &str, seed: u64, canvas: CanvasSize) -> Result<Scene, SceneFileError> {
     let (_, text) =
         PRESETS
             .iter()
@@ -144,11 +144,16 @@ pub fn preset_on(name: &str, seed: u64, canvas: Canvas) -> Result<Scene, SceneFi
 
 /// Parses and validates scene-file text; `file` names it in errors.
 pub fn parse(file: &str, text: &str, seed: u64) -> Result<Scene, SceneFileError> {
-    parse_on(file, text, seed, Canvas::default())
+    parse_on(file, text, seed, CanvasSize::default())
 }
 
 /// [`parse`], with the balls spawned on `canvas` where it gives a size.
-fn parse_on(file: &str, text: &str, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
+fn parse_on(
+    file: &str,
+    text: &str,
+    seed: u64,
+    canvas: CanvasSize,
+) -> Result<Scene, SceneFileError> {
     let parse_error = |key: String, error: toml::de::Error| {
         let span = error.span().unwrap_or(0..0);
         let start = span.start.min(text.len());
@@ -409,7 +414,7 @@ pub struct Spawn {
 
 impl SceneFile {
     /// The file with `canvas`'s size in place of its own, where `canvas` gives one.
-    fn on(self, canvas: Canvas) -> SceneFile {
+    fn on(self, canvas: CanvasSize) -> SceneFile {
         SceneFile {
             width: canvas.width.unwrap_or(self.width),
             height: canvas.height.unwrap_or(self.height),
