@@ -1,29 +1,16 @@
 //! The ball: its state, the lesson's `step()` and its bounded trail.
 //!
 //! `Ball::step` is the lesson's loop, line for line: gravity changes the velocity, the velocity
-//! moves the ball, the four walls clamp then reflect, the new position joins the trail. The
-//! general solver (integrators, substeps, exact collisions, floors, ball-ball contacts) lives
-//! beside it in `motion` and `simulation`, and with the default settings gives the same numbers.
+//! moves the ball, the four walls clamp then reflect, the new position joins the trail. Beyond
+//! the lesson, `motion` and `simulation` pick the general solver a scene needs and run it: the
+//! integrators and substeps in `integrate`, the floors in `floor`, ball-ball contacts in
+//! `contacts` and `events`. With the default settings it gives the same numbers. Last come a
+//! ball's mass and the balls' kinetic energy, which those solvers and `compare` work with.
 
 use std::collections::VecDeque;
 
 use super::vec2::Vec2;
 use super::walls::Walls;
-
-/// The mass of a ball of `radius` px: balls are flat discs of one density, so mass grows as
-/// the radius squared (the unit cancels in every collision, so none is named).
-pub fn mass(radius: f64) -> f64 {
-    radius * radius
-}
-
-/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' [`mass`] (flat discs of equal density):
-/// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
-pub fn kinetic_energy(balls: &[Ball]) -> f64 {
-    balls
-        .iter()
-        .map(|b| 0.5 * mass(b.radius) * b.velocity().length_squared())
-        .sum()
-}
 
 /// One ball, in the lesson's units: pixels and frames.
 #[derive(Clone, Debug, PartialEq)]
@@ -115,6 +102,7 @@ impl Ball {
         self.trail.push(self.x, self.y);
     }
 }
+
 /// The last few positions of a ball, oldest first, never more than its capacity.
 ///
 /// A trail that keeps no points is a single empty pointer, so a ball without one is 48 bytes
@@ -191,4 +179,19 @@ impl Trail {
     fn points(&self) -> &VecDeque<(f64, f64)> {
         self.ring.as_ref().map_or(&NO_POINTS, |ring| &ring.points)
     }
+}
+
+/// The mass of a ball of `radius` px: balls are flat discs of one density, so mass grows as
+/// the radius squared (the unit cancels in every collision, so none is named).
+pub fn mass(radius: f64) -> f64 {
+    radius * radius
+}
+
+/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' [`mass`] (flat discs of equal density):
+/// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
+pub fn kinetic_energy(balls: &[Ball]) -> f64 {
+    balls
+        .iter()
+        .map(|b| 0.5 * mass(b.radius) * b.velocity().length_squared())
+        .sum()
 }
