@@ -136,9 +136,9 @@ impl<'a> Frames<'a> {
                 let balls = balls.iter().enumerate();
                 let circles = balls.clone().map(|(i, ball)| renderer.ball_circle(i, ball));
                 let dots = balls.flat_map(|(i, ball)| {
-                    let newest = ball.trail.iter().last().map(|&(x, y)| Circle {
-                        x,
-                        y,
+                    let newest = ball.trail.iter().last().map(|&point| Circle {
+                        x: point.x,
+                        y: point.y,
                         radius: ball.radius,
                         index: newest[i],
                     });

@@ -99,7 +99,7 @@ impl Ball {
     /// Appends the current position to the trail. After the move, so the trail ends where the
     /// ball is drawn (reflection question 3).
     pub fn record_trail(&mut self) {
-        self.trail.push(self.x, self.y);
+        self.trail.push(self.position());
     }
 }
 
@@ -116,12 +116,12 @@ pub struct Trail {
 /// The points of a trail that keeps some, and how many it keeps.
 #[derive(Clone, Debug, PartialEq)]
 struct Ring {
-    points: VecDeque<(f64, f64)>,
+    points: VecDeque<Vec2>,
     capacity: usize,
 }
 
 /// The points of a trail that keeps none.
-static NO_POINTS: VecDeque<(f64, f64)> = VecDeque::new();
+static NO_POINTS: VecDeque<Vec2> = VecDeque::new();
 
 impl Trail {
     /// An empty trail that keeps at most `capacity` points (0 keeps none).
@@ -142,7 +142,7 @@ impl Trail {
             return 0;
         }
         let buffer = (capacity as u64 + 1).next_power_of_two().max(4);
-        size_of::<Ring>() as u64 + buffer * size_of::<(f64, f64)>() as u64
+        size_of::<Ring>() as u64 + buffer * size_of::<Vec2>() as u64
     }
 
     /// Whether it keeps any points at all (its capacity is not 0).
@@ -151,11 +151,11 @@ impl Trail {
     }
 
     /// Adds the newest point and drops the oldest beyond capacity, so memory stays bounded.
-    pub fn push(&mut self, x: f64, y: f64) {
+    pub fn push(&mut self, point: Vec2) {
         let Some(ring) = &mut self.ring else {
             return; // a trail that keeps nothing: not even a buffer to cycle through
         };
-        ring.points.push_back((x, y));
+        ring.points.push_back(point);
         if ring.points.len() > ring.capacity {
             ring.points.pop_front();
         }
@@ -172,11 +172,11 @@ impl Trail {
     }
 
     /// The points, oldest first.
-    pub fn iter(&self) -> impl ExactSizeIterator<Item = &(f64, f64)> + '_ {
+    pub fn iter(&self) -> impl ExactSizeIterator<Item = &Vec2> + '_ {
         self.points().iter()
     }
 
-    fn points(&self) -> &VecDeque<(f64, f64)> {
+    fn points(&self) -> &VecDeque<Vec2> {
         self.ring.as_ref().map_or(&NO_POINTS, |ring| &ring.points)
     }
 }

@@ -26,6 +26,7 @@ use plotters::style::{register_font, FontStyle};
 
 use crate::output::{commit_all, AtomicFile, OutputError};
 use crate::physics::ball::Ball;
+use crate::physics::vec2::Vec2;
 use crate::scene::{InvalidValue, Scene};
 use record::Recording;
 
@@ -167,8 +168,8 @@ fn settings(scene: &Scene) -> Vec<String> {
             None => "no walls".to_string(),
         },
         match scene.gravity {
-            Some([0.0, g]) => format!("gravity {g} px/frame²"),
-            Some([gx, gy]) => format!("gravity ({gx}, {gy}) px/frame²"),
+            Some(Vec2 { x: 0.0, y: g }) => format!("gravity {g} px/frame²"),
+            Some(Vec2 { x: gx, y: gy }) => format!("gravity ({gx}, {gy}) px/frame²"),
             None => "no gravity".to_string(),
         },
     ];

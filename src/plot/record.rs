@@ -8,6 +8,7 @@ use crate::physics::ball::kinetic_energy;
 use crate::physics::ball::Ball;
 use crate::physics::contacts::Grid;
 use crate::physics::maths;
+use crate::physics::vec2::Vec2;
 use crate::scene::Scene;
 
 /// The panel a series is drawn in, top to bottom in this order.
@@ -51,7 +52,7 @@ pub struct Recording {
     /// The box the potential energy is measured in, px.
     width: f64,
     height: f64,
-    gravity: [f64; 2],
+    gravity: Vec2,
     /// Each ball's mass as a share of the average ball's (mass ∝ radius², as in collisions).
     mean_mass: f64,
     /// Finds the overlapping pairs, when the scene has ball-ball collisions and many balls.
@@ -112,7 +113,7 @@ impl Recording {
             bounces: Vec::new(),
             width: f64::from(scene.width),
             height: f64::from(scene.height),
-            gravity: scene.gravity.unwrap_or([0.0, 0.0]),
+            gravity: scene.gravity.unwrap_or(Vec2::ZERO),
             mean_mass: masses / scene.balls.len().max(1) as f64,
             overlaps: (!one_ball && scene.ball_collisions.is_some()).then(Overlaps::default),
             last_vy: None,
@@ -135,7 +136,7 @@ impl Recording {
     /// still fall along it before touching the walls gravity pulls it towards (for the
     /// lesson's downward gravity, `g·h` with `h` the height above the floor).
     pub fn potential(&self, ball: &Ball) -> f64 {
-        let [gx, gy] = self.gravity;
+        let Vec2 { x: gx, y: gy } = self.gravity;
         let rest = |g: f64, side: f64| {
             if g < 0.0 {
                 ball.radius

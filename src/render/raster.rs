@@ -163,11 +163,10 @@ impl Renderer {
     pub fn draw_background(&self, frame: &mut IndexedFrame) {
         frame.fill(self.background);
         tally_many(Work::PixelsDrawn, frame.as_raw().len() as u64);
-        let canvas = [f64::from(self.width), f64::from(self.height)];
+        let canvas = Vec2::new(f64::from(self.width), f64::from(self.height));
         for floor in &self.floors {
-            let [from, to] = floor.ends().map(Vec2::to_array);
-            if let Some((from, to)) = clip_segment(from, to, canvas) {
-                let point = |[x, y]: [f64; 2]| (x as f32, y as f32);
+            if let Some((from, to)) = clip_segment(floor.from, floor.to, canvas) {
+                let point = |p: Vec2| (p.x as f32, p.y as f32);
                 draw_line(frame, point(from), point(to), self.floor);
             }
         }
@@ -193,9 +192,9 @@ impl Renderer {
     pub fn trail_dots<'a>(&'a self, i: usize, ball: &'a Ball) -> impl Iterator<Item = Circle> + 'a {
         let (style, n) = (&self.styles[i], ball.trail.len());
         let dots = ball.trail.iter().take(drawn_dots(n).end).enumerate();
-        dots.map(move |(i, &(x, y))| Circle {
-            x,
-            y,
+        dots.map(move |(i, &point)| Circle {
+            x: point.x,
+            y: point.y,
             radius: ball.radius * self.look.size_share(i, n),
             index: style.trail_shade(i, n),
         })
@@ -301,31 +300,28 @@ fn insert_shades(
 /// (`canvas` = width, height), in floating point: the line is walked along the longer axis pixel by
 /// pixel, so a floor from -1e30 to 1e30 then costs no more than one across the canvas.
 /// `None` when it misses the canvas along that axis. Ends already inside stay, to the bit.
-fn clip_segment(from: [f64; 2], to: [f64; 2], canvas: [f64; 2]) -> Option<([f64; 2], [f64; 2])> {
-    let delta = [to[0] - from[0], to[1] - from[1]];
-    let (major, minor) = if delta[1].abs() > delta[0].abs() {
+fn clip_segment(from: Vec2, to: Vec2, canvas: Vec2) -> Option<(Vec2, Vec2)> {
+    let delta = to - from;
+    let (major, minor) = if delta.y.abs() > delta.x.abs() {
         (1, 0)
     } else {
         (0, 1)
     };
-    let (low, high) = (-1.0, canvas[major] + 1.0);
-    if from[major].max(to[major]) < low || from[major].min(to[major]) > high {
+    let (low, high) = (-1.0, canvas.axis(major) + 1.0);
+    if from.axis(major).max(to.axis(major)) < low || from.axis(major).min(to.axis(major)) > high {
         return None;
     }
     // The line as `minor = intercept + slope * major`, |slope| <= 1. Floating point cannot
     // place a line finer than the last bit of its far ends, but in this form lines such as
     // y = 120 or y = x with ends at ±1e30 come out exact.
-    let slope = delta[minor] / delta[major];
-    let intercept = from[minor] - slope * from[major];
-    let cut = |end: [f64; 2]| {
-        let along = end[major].clamp(low, high);
-        if along == end[major] {
+    let slope = delta.axis(minor) / delta.axis(major);
+    let intercept = from.axis(minor) - slope * from.axis(major);
+    let cut = |end: Vec2| {
+        let along = end.axis(major).clamp(low, high);
+        if along == end.axis(major) {
             return end;
         }
-        let mut point = [0.0; 2];
-        point[major] = along;
-        point[minor] = intercept + slope * along;
-        point
+        Vec2::from_axes(major, along, intercept + slope * along)
     };
     Some((cut(from), cut(to)))
 }

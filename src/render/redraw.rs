@@ -29,6 +29,7 @@ use super::ellipse::{fill_box, PixelBox};
 use super::palette::{drawn_dots, IndexedFrame};
 use super::raster::Renderer;
 use crate::physics::ball::Ball;
+use crate::physics::vec2::Vec2;
 use crate::work::{tally_many, Work};
 
 /// What changed in a frame since the frame before it on the same canvas.
@@ -243,7 +244,7 @@ impl Still {
     /// `None` when some trail point lies off the ball's centre.
     fn of(ball: &Ball) -> Option<Still> {
         let centre = [ball.x.to_bits(), ball.y.to_bits()];
-        let on_centre = |&(x, y): &(f64, f64)| [x.to_bits(), y.to_bits()] == centre;
+        let on_centre = |point: &Vec2| [point.x.to_bits(), point.y.to_bits()] == centre;
         ball.trail.iter().all(on_centre).then_some(Still {
             centre,
             radius: ball.radius.to_bits(),

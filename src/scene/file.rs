@@ -259,6 +259,7 @@ struct SceneFile {
     frames: u32,
     #[serde(default = "default_frame_ms")]
     frame_ms: u32,
+    /// `[x, y]` as the file writes it (the scene holds it as a `Vec2`, as it holds floors).
     gravity: Option<[f64; 2]>,
     drag: Option<f64>,
     walls: Option<WallsFile>,
@@ -467,7 +468,7 @@ impl SceneFile {
             height: self.height,
             background: self.background,
             balls,
-            gravity: self.gravity,
+            gravity: self.gravity.map(Vec2::from),
             drag: self.drag,
             walls: self.walls.map(|w| w.damping),
             floors: self.floors.iter().map(FloorFile::floor).collect(),

@@ -39,7 +39,7 @@ pub struct Scene {
     pub background: Rgb,
     pub balls: Vec<BallSpec>,
     /// Acceleration added to every ball's velocity each frame, px/frame² (None: no gravity).
-    pub gravity: Option<[f64; 2]>,
+    pub gravity: Option<Vec2>,
     /// Share of speed lost to the air each frame, 0 to 1 (None: no drag).
     pub drag: Option<f64>,
     /// The box's damping: share of speed each wall bounce keeps, 1 elastic, 0 dead stop
@@ -224,7 +224,7 @@ impl Scene {
     /// The forces and boundaries the scene names.
     pub fn effects(&self) -> Effects {
         Effects {
-            gravity: self.gravity.map(Vec2::from),
+            gravity: self.gravity,
             drag: self.drag,
             walls: self.walls.map(|damping| Walls {
                 width: f64::from(self.width),
@@ -247,8 +247,8 @@ impl Scene {
             }
         }
         if let Some(gravity) = self.gravity {
-            check_finite("gravity", gravity[0])?;
-            check_finite("gravity", gravity[1])?;
+            check_finite("gravity", gravity.x)?;
+            check_finite("gravity", gravity.y)?;
         }
         if let Some(drag) = self.drag {
             check_share("drag", drag)?;
