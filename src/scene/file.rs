@@ -385,11 +385,28 @@ struct BallFile {
 }
 
 impl FloorFile {
+    /// The floor as the scene holds it.
     fn floor(&self) -> Floor {
         Floor {
             from: Vec2::from(self.from),
             to: Vec2::from(self.to),
             damping: self.damping,
+        }
+    }
+}
+
+impl BallFile {
+    /// The ball as the scene holds it.
+    fn spec(&self) -> BallSpec {
+        BallSpec {
+            x: self.x,
+            y: self.y,
+            vx: self.vx,
+            vy: self.vy,
+            radius: self.radius,
+            colour: self.colour,
+            trail_colour: self.trail_colour,
+            trail: self.trail,
         }
     }
 }
@@ -424,44 +441,10 @@ impl SceneFile {
     }
 
     fn into_scene(self, seed: u64) -> Result<Scene, InvalidValue> {
-        let mut balls: Vec<BallSpec> = self
-            .balls
-            .into_iter()
-            .map(|b| BallSpec {
-                x: b.x,
-                y: b.y,
-                vx: b.vx,
-                vy: b.vy,
-                radius: b.radius,
-                colour: b.colour,
-                trail_colour: b.trail_colour,
-                trail: b.trail,
-            })
-            .collect();
-        if let Some(spawn) = self.spawn {
-            if spawn.count > MAX_BALLS {
-                return Err(InvalidValue {
-                    key: "spawn.count".to_string(),
-                    value: spawn.count.to_string(),
-                    allowed: format!("must be at most {MAX_BALLS} balls"),
-                });
-            }
-            let (width, height) = (f64::from(self.width), f64::from(self.height));
-            let floors: Vec<Floor> = self.floors.iter().map(FloorFile::floor).collect();
-            // Balls that collide start apart; balls that pass through each other may start
-            // anywhere (as the `many` preset's always have); both above every floor.
-            let spawned = match self.ball_collisions {
-                Some(_) => spawn.balls(width, height, seed, &floors),
-                None => spawn.overlapping_balls_above(width, height, seed, &floors),
-            };
-            balls.extend(spawned.ok_or_else(|| InvalidValue {
-                key: "spawn.count".to_string(),
-                value: spawn.count.to_string(),
-                allowed: format!(
-                    "there is no room for that many balls of radius {} above the floors",
-                    spawn.radius
-                ),
-            })?);
+        let floors: Vec<Floor> = self.floors.iter().map(FloorFile::floor).collect();
+        let mut balls: Vec<BallSpec> = self.balls.iter().map(BallFile::spec).collect();
+        if let Some(spawn) = &self.spawn {
+            balls.extend(self.spawned(spawn, seed, &floors)?);
         }
         Ok(Scene {
             width: self.width,
@@ -471,7 +454,7 @@ impl SceneFile {
             gravity: self.gravity.map(Vec2::from),
             drag: self.drag,
             walls: self.walls.map(|w| w.damping),
-            floors: self.floors.iter().map(FloorFile::floor).collect(),
+            floors,
             floor_colour: self.floor_colour,
             ball_collisions: self.ball_collisions.map(|c| c.restitution),
             motion: Motion {
@@ -487,6 +470,36 @@ impl SceneFile {
                 .trail_fade
                 .map_or(Ok(TrailFade::Linear), FadeFile::read)?,
             trail_shrink: self.trail_shrink,
+        })
+    }
+
+    /// The balls `spawn` places in this file's box, above `floors`: apart if they collide,
+    /// anywhere if they pass through each other (as the `many` preset's always have).
+    fn spawned(
+        &self,
+        spawn: &Spawn,
+        seed: u64,
+        floors: &[Floor],
+    ) -> Result<Vec<BallSpec>, InvalidValue> {
+        if spawn.count > MAX_BALLS {
+            return Err(InvalidValue {
+                key: "spawn.count".to_string(),
+                value: spawn.count.to_string(),
+                allowed: format!("must be at most {MAX_BALLS} balls"),
+            });
+        }
+        let (width, height) = (f64::from(self.width), f64::from(self.height));
+        let spawned = match self.ball_collisions {
+            Some(_) => spawn.balls(width, height, seed, floors),
+            None => spawn.overlapping_balls_above(width, height, seed, floors),
+        };
+        spawned.ok_or_else(|| InvalidValue {
+            key: "spawn.count".to_string(),
+            value: spawn.count.to_string(),
+            allowed: format!(
+                "there is no room for that many balls of radius {} above the floors",
+                spawn.radius
+            ),
         })
     }
 }
