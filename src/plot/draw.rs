@@ -159,8 +159,16 @@ fn draw_panel<DB: DrawingBackend>(
     if !recording.bounces.is_empty() {
         legend.push(("bounce (moving up again)", BOUNCE.stroke_width(1), true));
     }
+    draw_legend(&legend_area, legend)
+}
 
-    let text = ("sans-serif", 13).into_text_style(&legend_area);
+/// A panel's legend strip: each entry's name beside a sample of its line, upright for an
+/// entry drawn upright in the chart (the bounce marks).
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    legend: Vec<(&str, ShapeStyle, bool)>,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let text = ("sans-serif", 13).into_text_style(area);
     for (row, (name, style, upright)) in legend.into_iter().enumerate() {
         let y = 30 + 22 * row as i32;
         let sample = if upright {
@@ -168,8 +176,8 @@ fn draw_panel<DB: DrawingBackend>(
         } else {
             vec![(0, y), (24, y)]
         };
-        legend_area.draw(&PathElement::new(sample, style))?;
-        legend_area.draw_text(name, &text.pos(Pos::new(HPos::Left, VPos::Center)), (32, y))?;
+        area.draw(&PathElement::new(sample, style))?;
+        area.draw_text(name, &text.pos(Pos::new(HPos::Left, VPos::Center)), (32, y))?;
     }
     Ok(())
 }

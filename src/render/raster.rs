@@ -109,21 +109,6 @@ impl Renderer {
             .collect();
         let new_index = palette.reorder(&stages(&always, &tables, &kinds));
         let renumber = |index: u8| new_index[usize::from(index)];
-
-        let tables: Vec<Arc<[u8]>> = tables
-            .iter()
-            .map(|table| table.shades.iter().copied().map(renumber).collect())
-            .collect();
-        let styles = balls
-            .into_iter()
-            .zip(table_of_ball)
-            .zip(&scene.balls)
-            .map(|((ball, table), spec)| BallStyle {
-                ball: renumber(ball),
-                trail_shades: Arc::clone(&tables[table]),
-                most_dots: drawn_dots(spec.trail).len(),
-            })
-            .collect();
         Ok(Renderer {
             width: scene.width,
             height: scene.height,
@@ -131,7 +116,7 @@ impl Renderer {
             background: renumber(background),
             floors: scene.floors.clone(),
             floor: renumber(floor),
-            styles,
+            styles: ball_styles(scene, &balls, &tables, &table_of_ball, renumber),
             look,
         })
     }
@@ -233,6 +218,32 @@ impl GrowingPalette {
         let too_many = TooManyColours { needed: self.solid };
         self.palette.insert(colour).ok_or(too_many)
     }
+}
+
+/// Each ball's style, given its colour's index (`balls`) and its shade table's number
+/// (`table_of_ball`), every index renumbered by `renumber`. Balls of one trail colour share
+/// their table's renumbered shades.
+fn ball_styles(
+    scene: &Scene,
+    balls: &[u8],
+    tables: &[ShadeTable],
+    table_of_ball: &[usize],
+    renumber: impl Fn(u8) -> u8,
+) -> Vec<BallStyle> {
+    let tables: Vec<Arc<[u8]>> = tables
+        .iter()
+        .map(|table| table.shades.iter().map(|&index| renumber(index)).collect())
+        .collect();
+    balls
+        .iter()
+        .zip(table_of_ball)
+        .zip(&scene.balls)
+        .map(|((&ball, &table), spec)| BallStyle {
+            ball: renumber(ball),
+            trail_shades: Arc::clone(&tables[table]),
+            most_dots: drawn_dots(spec.trail).len(),
+        })
+        .collect()
 }
 
 /// One shade table per trail colour, in the order the balls first use them, each sized for
