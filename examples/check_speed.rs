@@ -9,7 +9,7 @@
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use bouncing_ball::check::{self, Outcome};
+use bouncing_ball::check::{self, Grade};
 use bouncing_ball::scene::file::{preset, PRESETS};
 use bouncing_ball::{run, Job};
 
@@ -44,12 +44,7 @@ fn main() {
         let check_time = median(runs, || {
             let verdicts = check::check(&scene, &files, &check::Options::default(), &Job::new())
                 .expect("the check runs");
-            assert_eq!(
-                verdicts[0].outcome,
-                Outcome::Match,
-                "{}",
-                verdicts[0].line()
-            );
+            assert_eq!(verdicts[0].grade, Grade::Match, "{}", verdicts[0].line());
         });
         let ms = |d: Duration| d.as_secs_f64() * 1000.0;
         println!(

@@ -14,7 +14,7 @@ use std::process::ExitCode;
 use bouncing_ball::check::pitfalls::Pitfall;
 use bouncing_ball::gif::GifWriter;
 use bouncing_ball::output::{commit_all, AtomicFile};
-use bouncing_ball::physics::{Ball, Trail, Walls};
+use bouncing_ball::physics::{Ball, Trail, Vec2, Walls};
 use bouncing_ball::render::Renderer;
 use bouncing_ball::{BallSpec, Scene};
 
@@ -49,7 +49,7 @@ impl StarterBall {
         // Left/right as one if/else, top/bottom as another.
 
         // Given: the trail remembers where the ball is after the move.
-        self.trail.push(self.x, self.y);
+        self.trail.push(Vec2::new(self.x, self.y));
     }
 
     /// The library's ball at the same state, so the library can draw it.
@@ -77,7 +77,7 @@ fn scene() -> Scene {
             trail_colour: [60, 140, 255],
             trail: TRAIL_LEN,
         }],
-        gravity: Some([0.0, GRAVITY]),
+        gravity: Some(Vec2::new(0.0, GRAVITY)),
         walls: Some(BOUNCE_DAMPING),
         frames: FRAMES,
         frame_ms: 30,

@@ -13,13 +13,13 @@ use clap_complete::Shell;
 
 use crate::budget::{Budget, DEFAULT_GIF_BUDGET, DEFAULT_MEMORY_BUDGET, DEFAULT_TIME_BUDGET};
 use crate::check::pixels::Tolerance;
-use crate::check::{self, Outcome};
+use crate::check::{self, Grade};
 use crate::compare::methods::{self, MethodList};
 use crate::job::{Job, OutputKind, Summary};
 use crate::messages::{
     distance, flag, refuse, seconds, share, summary_line, whole_number, Failure,
 };
-use crate::scene::file::Canvas;
+use crate::scene::file::CanvasSize;
 use crate::scene::{self, preset_names, Overrides, Scene, SceneFileError};
 use crate::stop::Stop;
 use crate::sweep::{self, Change, Sweep, SweepError};
@@ -203,13 +203,13 @@ struct CheckArgs {
     #[arg(long, value_name = "FILE.png")]
     diff: Option<PathBuf>,
     /// One line per file, or one JSON object per file
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    format: Format,
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    format: ReportFormat,
 }
 
 /// How `check` reports.
 #[derive(clap::ValueEnum, Clone, Copy, Debug)]
-enum Format {
+enum ReportFormat {
     Text,
     Json,
 }
@@ -397,18 +397,18 @@ impl Cli {
         // -q: only what did not match.
         let said = verdicts
             .iter()
-            .filter(|v| !self.run.quiet || v.outcome != Outcome::Match);
+            .filter(|v| !self.run.quiet || v.grade != Grade::Match);
         for verdict in said {
             let _ = match args.format {
-                Format::Text => writeln!(out, "{}", verdict.line()),
-                Format::Json => writeln!(out, "{}", verdict.json()),
+                ReportFormat::Text => writeln!(out, "{}", verdict.line()),
+                ReportFormat::Json => writeln!(out, "{}", verdict.json()),
             };
         }
-        if verdicts.len() > 1 && matches!(args.format, Format::Text) && !self.run.quiet {
+        if verdicts.len() > 1 && matches!(args.format, ReportFormat::Text) && !self.run.quiet {
             let _ = writeln!(out, "{}", check::verdict::summary(&verdicts));
         }
-        let worst = verdicts.iter().map(|v| v.outcome).max();
-        match worst.map_or(0, Outcome::exit_code) {
+        let worst = verdicts.iter().map(|v| v.grade).max();
+        match worst.map_or(0, Grade::exit_code) {
             0 => Ok(()),
             code => Err(Failure {
                 line: String::new(),
@@ -579,7 +579,7 @@ impl SceneArgs {
     /// The scene to run: a file, a preset or `lesson`, with the typed flags laid over it.
     fn scene(&self, lesson: &Scene) -> Result<Scene, SceneFileError> {
         // A typed canvas size is there before any ball is spawned, so spawned balls fill it.
-        let canvas = Canvas {
+        let canvas = CanvasSize {
             width: self.settings.width,
             height: self.settings.height,
         };

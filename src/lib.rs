@@ -18,8 +18,9 @@
 //! outputs, checks for a stop, shows the progress and sums up what was written. [`budget`]
 //! works out before the first frame what a scene will cost, [`output`] makes files appear
 //! whole or not at all and only where a file belongs, [`stop`] ends a run cleanly on a
-//! signal, [`trace`] writes the CSV, [`progress`] shows how far a long run is. Above them,
-//! [`cli`] reads the command line and [`messages`] says what went wrong in one line.
+//! signal, [`trace`] writes the CSV, [`progress`] shows how far a long run is. Beneath every
+//! stage, [`work`] counts the work each does, for the tests. Above them all, [`cli`] reads the
+//! command line and [`messages`] says what went wrong in one line.
 //!
 //! # Example
 //!
@@ -54,6 +55,7 @@ pub mod scene;
 pub mod stop;
 pub mod sweep;
 pub mod trace;
+pub mod work;
 
 pub use job::{Job, OutputKind, RunError, Summary};
 pub use run::run;

@@ -4,6 +4,7 @@
 use std::process::ExitCode;
 
 use bouncing_ball::cli::Cli;
+use bouncing_ball::physics::Vec2;
 use bouncing_ball::scene::TrailFade;
 use bouncing_ball::{BallSpec, Scene};
 
@@ -65,7 +66,7 @@ fn lesson_scene() -> Scene {
             trail_colour: TRAIL_COLOUR,
             trail: TRAIL_LEN,
         }],
-        gravity: Some([0.0, GRAVITY]),
+        gravity: Some(Vec2::new(0.0, GRAVITY)),
         walls: Some(BOUNCE_DAMPING),
         frames: FRAMES,
         frame_ms: FRAME_MS,

@@ -5,6 +5,8 @@
 
 use std::process::ExitCode;
 
+use clap::error::{ContextKind, ContextValue, ErrorKind};
+
 use crate::job::{RunError, Summary};
 use crate::scene::InvalidValue;
 
@@ -95,13 +97,45 @@ impl Failure {
 /// mistake is in one). (Help and the version are no error: the
 /// command line prints them as clap does.)
 pub fn refuse(error: clap::Error, subcommand: Option<&str>) -> Failure {
-    use clap::error::{ContextKind, ContextValue, ErrorKind};
-    let text = |kind| match error.get(kind) {
+    let mut line = what_was_wrong(&error);
+    if let Some(ContextValue::Strings(allowed)) = error.get(ContextKind::ValidValue) {
+        if !allowed.is_empty() {
+            line += &format!("; allowed: {}", allowed.join(", "));
+        }
+    }
+    for kind in [
+        ContextKind::SuggestedValue,
+        ContextKind::SuggestedArg,
+        ContextKind::SuggestedSubcommand,
+    ] {
+        if let Some(near) = context_text(&error, kind) {
+            line += &format!("; did you mean {near}?");
+        }
+    }
+    // The help to read is the subcommand's, when the mistake is in one.
+    let help = subcommand.map_or("--help".to_string(), |name| {
+        format!("bouncing_ball {name} --help")
+    });
+    Failure {
+        line: format!("{line}; see {help}"),
+        code: 2,
+    }
+}
+
+/// The `kind` of context clap gave `error`, as text: several values joined by "or".
+fn context_text(error: &clap::Error, kind: ContextKind) -> Option<String> {
+    match error.get(kind) {
         Some(ContextValue::String(text)) => Some(text.clone()),
         Some(ContextValue::Strings(texts)) if !texts.is_empty() => Some(texts.join(" or ")),
         _ => None,
-    };
-    let mut line = match (
+    }
+}
+
+/// The start of a refusal's line, `error: ...`: a refused value as the user typed it and
+/// why, what is missing, or else clap's own first line.
+fn what_was_wrong(error: &clap::Error) -> String {
+    let text = |kind| context_text(error, kind);
+    match (
         text(ContextKind::InvalidArg),
         text(ContextKind::InvalidValue),
     ) {
@@ -113,7 +147,7 @@ pub fn refuse(error: clap::Error, subcommand: Option<&str>) -> Failure {
                 flag => flag,
             };
             let why =
-                std::error::Error::source(&error).map_or(String::new(), |why| format!(": {why}"));
+                std::error::Error::source(error).map_or(String::new(), |why| format!(": {why}"));
             format!(
                 "error: {flag} {value} is not allowed{why}{}",
                 decimal_comma(&value)
@@ -134,28 +168,6 @@ pub fn refuse(error: clap::Error, subcommand: Option<&str>) -> Failure {
             .unwrap_or("error")
             .trim_end()
             .to_string(),
-    };
-    if let Some(ContextValue::Strings(allowed)) = error.get(ContextKind::ValidValue) {
-        if !allowed.is_empty() {
-            line += &format!("; allowed: {}", allowed.join(", "));
-        }
-    }
-    for kind in [
-        ContextKind::SuggestedValue,
-        ContextKind::SuggestedArg,
-        ContextKind::SuggestedSubcommand,
-    ] {
-        if let Some(near) = text(kind) {
-            line += &format!("; did you mean {near}?");
-        }
-    }
-    // The help to read is the subcommand's, when the mistake is in one.
-    let help = subcommand.map_or("--help".to_string(), |name| {
-        format!("bouncing_ball {name} --help")
-    });
-    Failure {
-        line: format!("{line}; see {help}"),
-        code: 2,
     }
 }
 

@@ -42,9 +42,9 @@ pub fn run(scene: &Scene, job: &Job) -> Result<Summary, RunError> {
 fn check_finite(scene: &Scene, balls: &[Ball], frame: u32) -> Result<(), RunError> {
     RunError::if_not_finite(balls, frame, |i| {
         let spec = &scene.balls[i];
-        let gravity = scene
-            .gravity
-            .map_or("no gravity".to_string(), |g| format!("gravity {g:?}"));
+        let gravity = scene.gravity.map_or("no gravity".to_string(), |g| {
+            format!("gravity {:?}", g.to_array())
+        });
         format!(
             "x {:?}, y {:?}, vx {:?}, vy {:?}, {gravity}",
             spec.x, spec.y, spec.vx, spec.vy

@@ -3,6 +3,7 @@
 //! laws. `docs/contacts.md` has the figures these bounds come from.
 
 use bouncing_ball::physics::ball::Ball;
+use bouncing_ball::physics::vec2::Vec2;
 use bouncing_ball::scene::file::preset;
 use bouncing_ball::{BallSpec, Scene};
 use bouncing_ball_lab::accuracy::{
@@ -104,7 +105,7 @@ fn drop_onto_resting_ball(drop: f64) -> (Vec<f64>, f64) {
             spec(50.0, 190.0, 0.0, 0.0, 10.0),
             spec(50.0, 170.0 - drop, 0.0, 0.0, 10.0),
         ],
-        gravity: Some([0.0, 0.5]),
+        gravity: Some(Vec2::new(0.0, 0.5)),
         walls: Some(0.5),
         ball_collisions: Some(0.9),
         ..Scene::empty(100, 200)
@@ -145,7 +146,7 @@ fn fall_and_rebound(drop: f64, floor: f64) -> (f64, f64) {
             spec(50.0, 190.0, 0.0, 0.0, 10.0),
             spec(50.0, 170.0 - drop, 0.0, 0.0, 10.0),
         ],
-        gravity: Some([0.0, 0.5]),
+        gravity: Some(Vec2::new(0.0, 0.5)),
         walls: Some(floor),
         ball_collisions: Some(1.0),
         ..Scene::empty(100, 200)
@@ -189,7 +190,7 @@ fn a_fast_ball_beside_a_resting_one_bounces_off_the_floor() {
             spec(20.0, 190.0, 0.0, 0.0, 10.0),
             spec(70.0, 90.0, 0.0, 0.0, 10.0),
         ],
-        gravity: Some([0.0, 0.5]),
+        gravity: Some(Vec2::new(0.0, 0.5)),
         walls: Some(0.5),
         ball_collisions: Some(0.9),
         ..Scene::empty(100, 200)

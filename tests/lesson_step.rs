@@ -5,9 +5,9 @@
 
 mod common;
 
-use bouncing_ball::physics::work::{self, Work};
-use bouncing_ball::physics::{Ball, Integrator, Motion, Walls};
+use bouncing_ball::physics::{Ball, Integrator, Motion, Vec2, Walls};
 use bouncing_ball::scene::file as scene_file;
+use bouncing_ball::work::{self, Work};
 use bouncing_ball::{BallSpec, Scene};
 use common::lesson_scene;
 use proptest::prelude::*;
@@ -23,7 +23,7 @@ fn same(a: f64, b: f64) -> bool {
 /// returns the first frame at which they differ, with both balls.
 fn first_difference(scene: &Scene, frames: u32) -> Option<(u32, Ball, Ball)> {
     let spec = &scene.balls[0];
-    let gravity = scene.gravity.map_or(0.0, |g| g[1]);
+    let gravity = scene.gravity.map_or(0.0, |g| g.y);
     let walls = Walls {
         width: f64::from(scene.width),
         height: f64::from(scene.height),
@@ -137,7 +137,7 @@ fn single_ball_scene() -> impl Strategy<Value = Scene> {
                         trail_colour: [60, 140, 255],
                         trail,
                     }],
-                    gravity: Some([0.0, g]),
+                    gravity: Some(Vec2::new(0.0, g)),
                     walls: Some(damping),
                     frames: 500,
                     ..Scene::empty(width, height)

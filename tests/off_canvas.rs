@@ -37,7 +37,7 @@ fn drawn(frame: &IndexedFrame) -> Vec<(u32, u32)> {
 fn far_ball(x: f64, y: f64) -> Ball {
     let mut ball = Ball::new(x, y, 0.0, 0.0, 12.0, 20);
     for i in 0..20 {
-        ball.trail.push(x - f64::from(i), y);
+        ball.trail.push(Vec2::new(x - f64::from(i), y));
     }
     ball
 }

@@ -84,7 +84,7 @@ fn trail_never_grows_longer_than_trail_len() {
     let newest = *ball.trail.iter().last().unwrap();
     assert_eq!(
         newest,
-        (ball.x, ball.y),
+        ball.position(),
         "the newest trail point is where the ball is now"
     );
 }

@@ -299,7 +299,7 @@ fn png_plot_decodes_as_an_image_of_the_run() {
 #[test]
 fn every_bounce_keeps_0_7744_of_the_vertical_kinetic_energy_of_the_impact() {
     let scene = lesson_scene();
-    let g = scene.gravity.unwrap()[1];
+    let g = scene.gravity.unwrap().y;
     let mut recording = Recording::new(&scene);
     let mut simulation = scene.simulation();
     let mut states = Vec::new();

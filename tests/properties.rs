@@ -82,7 +82,7 @@ fn scene(with_floors: bool) -> impl Strategy<Value = Scene> {
             .prop_map(
                 move |(balls, gravity, drag, damping, floors, motion, restitution)| Scene {
                     balls,
-                    gravity: gravity.map(|(gx, gy)| [gx, gy]),
+                    gravity: gravity.map(|(gx, gy)| Vec2::new(gx, gy)),
                     drag,
                     walls: Some(damping),
                     floors,
@@ -96,13 +96,13 @@ fn scene(with_floors: bool) -> impl Strategy<Value = Scene> {
 }
 
 /// Total energy: kinetic plus gravitational potential, masses ∝ radius².
-fn energy(simulation: &Simulation, gravity: [f64; 2]) -> f64 {
+fn energy(simulation: &Simulation, gravity: Vec2) -> f64 {
     simulation
         .balls()
         .iter()
         .map(|b| {
             let mass = b.radius * b.radius;
-            mass * (0.5 * (b.vx * b.vx + b.vy * b.vy) - (gravity[0] * b.x + gravity[1] * b.y))
+            mass * (0.5 * (b.vx * b.vx + b.vy * b.vy) - (gravity.x * b.x + gravity.y * b.y))
         })
         .sum()
 }
@@ -136,8 +136,8 @@ proptest! {
         // Without ball-ball contacts: pushing two overlapping balls apart under gravity can lift
         // one of them, which is the same kind of gain and has its own tests (tests/collisions.rs).
         let scene = Scene { motion: Motion { collisions: CollisionMode::Clamp, ..scene.motion }, ball_collisions: None, ..scene };
-        let gravity = scene.gravity.unwrap_or([0.0, 0.0]);
-        let g = gravity[0].hypot(gravity[1]);
+        let gravity = scene.gravity.unwrap_or(Vec2::ZERO);
+        let g = gravity.x.hypot(gravity.y);
         let mut simulation = scene.simulation();
         let mut before = energy(&simulation, gravity);
         for frame in 0..scene.frames {
@@ -158,10 +158,10 @@ proptest! {
         let integrator = if rk4 { Integrator::Rk4 } else { Integrator::VelocityVerlet };
         let motion = Motion { integrator, collisions: CollisionMode::Exact, ..scene.motion };
         let scene = Scene { motion, drag: None, ball_collisions: None, ..scene };
-        let gravity = scene.gravity.unwrap_or([0.0, 0.0]);
+        let gravity = scene.gravity.unwrap_or(Vec2::ZERO);
         let mut simulation = scene.simulation();
         let mut before = energy(&simulation, gravity);
-        let scale: f64 = simulation.balls().iter().map(|b| b.radius * b.radius * (b.vx.hypot(b.vy).powi(2) + 1.0 + gravity[0].hypot(gravity[1]) * 600.0)).sum();
+        let scale: f64 = simulation.balls().iter().map(|b| b.radius * b.radius * (b.vx.hypot(b.vy).powi(2) + 1.0 + gravity.x.hypot(gravity.y) * 600.0)).sum();
         for frame in 0..scene.frames {
             simulation.step();
             let after = energy(&simulation, gravity);

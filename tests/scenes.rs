@@ -4,13 +4,13 @@
 mod common;
 
 use bouncing_ball::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
-use bouncing_ball::physics::work::{self, Work};
-use bouncing_ball::physics::Ball;
+use bouncing_ball::physics::{Ball, Vec2};
 use bouncing_ball::render::palette::{shade, MAX_COLOURS};
 use bouncing_ball::render::Renderer;
 use bouncing_ball::scene::file::{self as scene_file, SceneFileError, PRESETS};
 use bouncing_ball::scene::overrides::Overrides;
 use bouncing_ball::scene::TrailFade;
+use bouncing_ball::work::{self, Work};
 use bouncing_ball::{BallSpec, Scene};
 use common::lesson_scene;
 
@@ -492,8 +492,8 @@ fn a_trail_that_does_not_shrink_draws_its_dots_at_the_balls_radius() {
         // Two trail points far apart: the older is drawn (at half the radius if it shrinks),
         // the newer lies under the ball.
         let mut ball = Ball::new(200.0, 120.0, 0.0, 0.0, 12.0, 2);
-        ball.trail.push(60.0, 120.0);
-        ball.trail.push(200.0, 120.0);
+        ball.trail.push(Vec2::new(60.0, 120.0));
+        ball.trail.push(Vec2::new(200.0, 120.0));
         let mut frame = renderer.new_frame();
         renderer.draw(&[ball], &mut frame);
         let trail = scene.balls[0].trail_colour;

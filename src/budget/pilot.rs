@@ -137,7 +137,7 @@ impl Span {
 /// Runs the physics of `scene` for its first frames (at least one; see `PILOT_NS`) and says
 /// what each did.
 fn pilot(scene: &Scene) -> Vec<Activity> {
-    let canvas = [f64::from(scene.width), f64::from(scene.height)];
+    let canvas = Vec2::new(f64::from(scene.width), f64::from(scene.height));
     let mut simulation = scene.simulation();
     let mut was: Vec<Vec2> = simulation.balls().iter().map(Ball::position).collect();
     let mut frames = Vec::new();
@@ -146,7 +146,7 @@ fn pilot(scene: &Scene) -> Vec<Activity> {
         && physics_ns(scene, &physics) < PILOT_NS
     {
         simulation.step();
-        let mut rect = Bounds::EMPTY;
+        let mut rect = CoveringRect::EMPTY;
         let (mut changed, mut redrawn) = (0.0, false);
         for ((ball, spec), was) in simulation.balls().iter().zip(&scene.balls).zip(&mut was) {
             let step = ball.position() - *was;
@@ -158,7 +158,7 @@ fn pilot(scene: &Scene) -> Vec<Activity> {
             }
             *was = ball.position();
         }
-        let changed = changed.min(canvas[0] * canvas[1]);
+        let changed = changed.min(canvas.x * canvas.y);
         let chance = if redrawn { 1.0 } else { 0.0 };
         let this = Activity {
             changed_frames: chance,
@@ -196,16 +196,15 @@ fn draws_anew(ball: &Ball, was: Vec2, capacity: usize, shrink: bool) -> bool {
     if n < capacity {
         return true;
     }
-    let sides = |(x, y): (f64, f64), r: f64| {
+    let sides = |centre: Vec2, r: f64| {
         [
-            (x - r) as i32,
-            (y - r) as i32,
-            (x + r) as i32,
-            (y + r) as i32,
+            (centre.x - r) as i32,
+            (centre.y - r) as i32,
+            (centre.x + r) as i32,
+            (centre.y + r) as i32,
         ]
     };
-    let now = ball.position();
-    if sides((now.x, now.y), ball.radius) != sides((was.x, was.y), ball.radius) {
+    if sides(ball.position(), ball.radius) != sides(was, ball.radius) {
         return true;
     }
     // Dot `i` (from 1) and where it was, the point before it.
@@ -234,21 +233,21 @@ fn dots_share(ball: &BallSpec, shrink: bool) -> f64 {
 }
 
 /// A rectangle on the canvas grown to cover balls and their trails.
-struct Bounds {
+struct CoveringRect {
     low: Vec2,
     high: Vec2,
 }
 
-impl Bounds {
-    const EMPTY: Bounds = Bounds {
+impl CoveringRect {
+    const EMPTY: CoveringRect = CoveringRect {
         low: Vec2::new(f64::INFINITY, f64::INFINITY),
         high: Vec2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
     };
 
     /// Grows to cover `ball` and its trail, within the canvas.
-    fn add(&mut self, ball: &Ball, canvas: [f64; 2]) {
+    fn add(&mut self, ball: &Ball, canvas: Vec2) {
         let r = Vec2::new(ball.radius, ball.radius);
-        let points = ball.trail.iter().map(|&(x, y)| Vec2::new(x, y));
+        let points = ball.trail.iter().copied();
         for point in points.chain([ball.position()]) {
             self.low = Vec2::new(self.low.x.min(point.x - r.x), self.low.y.min(point.y - r.y));
             self.high = Vec2::new(
@@ -257,7 +256,7 @@ impl Bounds {
             );
         }
         self.low = Vec2::new(self.low.x.max(0.0), self.low.y.max(0.0));
-        self.high = Vec2::new(self.high.x.min(canvas[0]), self.high.y.min(canvas[1]));
+        self.high = Vec2::new(self.high.x.min(canvas.x), self.high.y.min(canvas.y));
     }
 
     fn is_empty(&self) -> bool {

@@ -146,16 +146,31 @@ impl Pictures<'_> {
         };
         let number = self.next;
         self.next += 1;
-        if let Some((area, saved)) = self.restore.take() {
-            self.mark(area);
-            for (x, y) in pixels(area) {
-                let before = saved.as_ref().map_or(self.animation.background, |saved| {
-                    *saved.get_pixel(x - area.left, y - area.top)
-                });
-                self.canvas.put_pixel(x, y, before);
-            }
+        self.dispose_of_last();
+        let area = self.area_of(frame);
+        self.mark(area);
+        self.restore = self.disposal(frame, area);
+        self.draw(frame, number, area)
+    }
+
+    /// Does the last frame's disposal: puts back the background, or what was there before
+    /// it, where it was drawn.
+    fn dispose_of_last(&mut self) {
+        let Some((area, saved)) = self.restore.take() else {
+            return;
+        };
+        self.mark(area);
+        for (x, y) in pixels(area) {
+            let before = saved.as_ref().map_or(self.animation.background, |saved| {
+                *saved.get_pixel(x - area.left, y - area.top)
+            });
+            self.canvas.put_pixel(x, y, before);
         }
-        let area = Rect {
+    }
+
+    /// The part of the canvas `frame` covers (a frame may reach beyond the canvas).
+    fn area_of(&self, frame: &Stored) -> Rect {
+        Rect {
             left: frame.left.min(self.canvas.width()),
             top: frame.top.min(self.canvas.height()),
             width: frame
@@ -164,9 +179,13 @@ impl Pictures<'_> {
             height: frame
                 .height
                 .min(self.canvas.height().saturating_sub(frame.top)),
-        };
-        self.mark(area);
-        self.restore = match frame.dispose {
+        }
+    }
+
+    /// What `frame`'s disposal will put back over `area` before the next frame: the
+    /// background (no pixels), the pixels there now, or nothing.
+    fn disposal(&self, frame: &Stored, area: Rect) -> Option<(Rect, Option<RgbImage>)> {
+        match frame.dispose {
             DisposalMethod::Background => Some((area, None)),
             DisposalMethod::Previous => {
                 let saved = image::imageops::crop_imm(
@@ -179,7 +198,12 @@ impl Pictures<'_> {
                 Some((area, Some(saved.to_image())))
             }
             DisposalMethod::Any | DisposalMethod::Keep => None,
-        };
+        }
+    }
+
+    /// Decodes `frame`, stored frame `number`, and draws its pixels inside `area` over the
+    /// canvas, leaving what is there under its transparent ones.
+    fn draw(&mut self, frame: &Stored, number: usize, area: Rect) -> Result<(), Trouble> {
         let indices = lzw_indices(&frame.lzw, frame.width, frame.height, frame.interlaced)
             .ok_or_else(|| Trouble::NotWhole(format!("frame {number}'s pixels do not fill it")))?;
         let palette = frame

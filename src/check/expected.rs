@@ -14,7 +14,7 @@ use crate::scene::Scene;
 use super::pitfalls::Pitfall;
 
 /// The balls of a scene moving frame by frame, as the program moves them or with a mistake.
-pub enum Motion {
+pub enum ExpectedMotion {
     Scene(Box<Simulation>),
     Mistaken {
         balls: Vec<Ball>,
@@ -24,16 +24,16 @@ pub enum Motion {
     },
 }
 
-impl Motion {
+impl ExpectedMotion {
     /// The scene's motion with `pitfall` in it (`None`: the program's); `None` if the scene
     /// does not move by the lesson's step, which the pitfalls are mistakes in.
-    pub fn new(scene: &Scene, pitfall: Option<Pitfall>) -> Option<Motion> {
+    pub fn new(scene: &Scene, pitfall: Option<Pitfall>) -> Option<ExpectedMotion> {
         let simulation = scene.simulation();
         let Some(pitfall) = pitfall else {
-            return Some(Motion::Scene(Box::new(simulation)));
+            return Some(ExpectedMotion::Scene(Box::new(simulation)));
         };
         let (gravity, walls) = simulation.lesson_step()?;
-        Some(Motion::Mistaken {
+        Some(ExpectedMotion::Mistaken {
             balls: simulation.balls().to_vec(),
             pitfall,
             gravity,
@@ -44,8 +44,8 @@ impl Motion {
     /// One frame on.
     pub fn step(&mut self) {
         match self {
-            Motion::Scene(simulation) => simulation.step(),
-            Motion::Mistaken {
+            ExpectedMotion::Scene(simulation) => simulation.step(),
+            ExpectedMotion::Mistaken {
                 balls,
                 pitfall,
                 gravity,
@@ -58,8 +58,8 @@ impl Motion {
 
     pub fn balls(&self) -> &[Ball] {
         match self {
-            Motion::Scene(simulation) => simulation.balls(),
-            Motion::Mistaken { balls, .. } => balls,
+            ExpectedMotion::Scene(simulation) => simulation.balls(),
+            ExpectedMotion::Mistaken { balls, .. } => balls,
         }
     }
 }
@@ -67,7 +67,7 @@ impl Motion {
 /// The expected frames, drawn one at a time.
 pub struct Frames<'a> {
     renderer: &'a Renderer,
-    motion: Motion,
+    motion: ExpectedMotion,
     drawing: Drawing,
     /// The renderer's colours, and for a mistake each trail's full colour.
     palette: Palette,
@@ -88,7 +88,7 @@ enum Drawing {
 }
 
 impl<'a> Frames<'a> {
-    /// The frames of `scene` with `pitfall` in it, as [`Motion::new`] allows (and if a
+    /// The frames of `scene` with `pitfall` in it, as [`ExpectedMotion::new`] allows (and if a
     /// mistake's extra colours fit the palette).
     pub fn new(scene: &Scene, renderer: &'a Renderer, pitfall: Option<Pitfall>) -> Option<Self> {
         let mut palette = renderer.palette().clone();
@@ -106,7 +106,7 @@ impl<'a> Frames<'a> {
         };
         Some(Frames {
             renderer,
-            motion: Motion::new(scene, pitfall)?,
+            motion: ExpectedMotion::new(scene, pitfall)?,
             drawing,
             palette,
         })
@@ -136,9 +136,9 @@ impl<'a> Frames<'a> {
                 let balls = balls.iter().enumerate();
                 let circles = balls.clone().map(|(i, ball)| renderer.ball_circle(i, ball));
                 let dots = balls.flat_map(|(i, ball)| {
-                    let newest = ball.trail.iter().last().map(|&(x, y)| Circle {
-                        x,
-                        y,
+                    let newest = ball.trail.iter().last().map(|&point| Circle {
+                        x: point.x,
+                        y: point.y,
                         radius: ball.radius,
                         index: newest[i],
                     });

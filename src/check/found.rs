@@ -71,9 +71,9 @@ impl Trouble {
     }
 }
 
-/// A file against the expected frames: how many frames it holds (`None` for a still, which
-/// is the last) and where it first differs.
-pub struct Comparison {
+/// What comparing a file with the expected frames found: how many frames it holds (`None`
+/// for a still, which is the last) and where it first differs.
+pub struct Finding {
     pub frames: Option<u32>,
     pub first: Option<First>,
 }

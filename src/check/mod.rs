@@ -33,12 +33,12 @@ use crate::render::raster::Renderer;
 use crate::render::write_rgb_png;
 use crate::scene::Scene;
 
-use expected::Motion;
-pub use found::{Comparison, First, Trouble};
+use expected::ExpectedMotion;
+pub use found::{Finding, First, Trouble};
 use pictures::Theirs;
 use pitfalls::Pitfall;
 use pixels::Tolerance;
-pub use verdict::{Outcome, Verdict};
+pub use verdict::{Grade, Verdict};
 
 /// How close a learner's work must be to match.
 #[derive(Clone, Copy, Debug, Default)]
@@ -94,20 +94,18 @@ fn grade(
     want_picture: bool,
 ) -> (Verdict, Option<RgbImage>) {
     let compared = Theirs::load(path, scene, options.memory_budget).and_then(|theirs| {
-        let mut comparison = compare(&theirs, scene, renderer, None, options, want_picture)?
+        let mut finding = compare(&theirs, scene, renderer, None, options, want_picture)?
             .expect("the scene's own motion always applies");
-        let picture = comparison.first.as_mut().and_then(|f| f.picture.take());
-        let pitfall = if comparison.first.is_some() {
+        let picture = finding.first.as_mut().and_then(|f| f.picture.take());
+        let pitfall = if finding.first.is_some() {
             diagnose(&theirs, scene, renderer, options)
         } else {
             None
         };
-        Ok((comparison, pitfall, picture))
+        Ok((finding, pitfall, picture))
     });
     match compared {
-        Ok((comparison, pitfall, picture)) => {
-            (Verdict::of(path, scene, &comparison, pitfall), picture)
-        }
+        Ok((finding, pitfall, picture)) => (Verdict::of(path, scene, &finding, pitfall), picture),
         Err(trouble) => (Verdict::trouble(path, &trouble), None),
     }
 }
@@ -121,9 +119,9 @@ fn compare(
     pitfall: Option<Pitfall>,
     options: &Options,
     want_picture: bool,
-) -> Result<Option<Comparison>, Trouble> {
+) -> Result<Option<Finding>, Trouble> {
     match theirs {
-        Theirs::Trajectory(trajectory) => match Motion::new(scene, pitfall) {
+        Theirs::Trajectory(trajectory) => match ExpectedMotion::new(scene, pitfall) {
             Some(mut motion) => trajectory
                 .compare(&mut motion, scene.frames, options.tolerance)
                 .map(Some),

@@ -11,16 +11,16 @@ use image::RgbImage;
 
 use super::animation::{Animation, Pictures};
 use super::expected::Frames;
-use super::found::{Comparison, First, Trouble};
+use super::found::{Finding, First, Trouble};
 use super::pixels::{diff_picture, difference, Tolerance};
-use super::trajectory::Trajectory;
+use super::trajectory::TrajectoryFile;
 use crate::render::dirty::Rect;
 use crate::scene::Scene;
 
 /// What a learner handed in.
 pub enum Theirs {
     Images(Images),
-    Trajectory(Trajectory),
+    Trajectory(TrajectoryFile),
 }
 
 /// Handed-in pictures.
@@ -68,7 +68,7 @@ impl Theirs {
                 let text = fs::read(path).map_err(Trouble::Read)?;
                 let text = String::from_utf8(text).map_err(|_| Trouble::NotRecognised)?;
                 Ok(Theirs::Trajectory(
-                    Trajectory::parse(&text).ok_or(Trouble::NotRecognised)??,
+                    TrajectoryFile::parse(&text).ok_or(Trouble::NotRecognised)??,
                 ))
             }
         }
@@ -85,19 +85,62 @@ impl Images {
         expected: &mut Frames,
         tolerance: &Tolerance,
         want_picture: bool,
-    ) -> Result<Comparison, Trouble> {
+    ) -> Result<Finding, Trouble> {
         let frame_cs = u64::from(scene.frame_ms / 10).max(1);
-        let (count, mut source) = match self {
-            Images::Gif(animation) => {
-                let timeline = Timeline::new(animation, frame_cs);
-                (Some(timeline.frames), Source::Gif(timeline))
-            }
-            Images::Folder(files) => (
-                Some(files.len() as u32),
-                Source::Folder(files, None, memory_budget),
-            ),
-            Images::Still(picture) => (None, Source::Still(picture)),
+        let mut source = match self {
+            Images::Gif(animation) => Source::Gif(Timeline::new(animation, frame_cs)),
+            Images::Folder(files) => Source::Folder(files, None, memory_budget),
+            Images::Still(picture) => Source::Still(picture),
         };
+        let mut first = source.first_difference(scene, expected, tolerance, want_picture)?;
+        if let Source::Gif(timeline) = &source {
+            // A frame shown at the wrong moment differs, even if every picture is right; the
+            // moment is named first, as what makes the picture differ there.
+            if let Some((frame, what)) = timeline.off_beat(scene.frame_ms) {
+                if first.as_ref().is_none_or(|f: &First| frame <= f.frame) {
+                    first = Some(First {
+                        frame,
+                        what,
+                        picture: None,
+                    });
+                }
+            }
+        }
+        Ok(Finding {
+            frames: source.frames(),
+            first,
+        })
+    }
+}
+
+/// Where the pictures come from, one per frame of the timeline.
+enum Source<'a> {
+    Gif(Timeline<'a>),
+    /// The files, the one read last, and the memory budget.
+    Folder(&'a [PathBuf], Option<RgbImage>, u64),
+    Still(&'a RgbImage),
+}
+
+impl Source<'_> {
+    /// How many frames the pictures hold (`None` for a still, which is the last frame).
+    fn frames(&self) -> Option<u32> {
+        match self {
+            Source::Gif(timeline) => Some(timeline.frames),
+            Source::Folder(files, ..) => Some(files.len() as u32),
+            Source::Still(_) => None,
+        }
+    }
+
+    /// The first frame the pictures show differently from `expected`, beyond `tolerance`,
+    /// if any; with `want_picture`, the difference drawn.
+    fn first_difference(
+        &mut self,
+        scene: &Scene,
+        expected: &mut Frames,
+        tolerance: &Tolerance,
+        want_picture: bool,
+    ) -> Result<Option<First>, Trouble> {
+        let count = self.frames();
         let last = scene.frames.saturating_sub(1);
         let shared = count.map_or(scene.frames, |n| n.min(scene.frames));
         let total = u64::from(scene.width) * u64::from(scene.height);
@@ -105,13 +148,12 @@ impl Images {
         // either side changed since; with some allowed, each frame is compared whole.
         let regional = !tolerance.admits(1, total);
         let mut compared = false;
-        let mut first = None;
         for k in 0..shared {
             let (ours, palette, our_change) = expected.next_frame();
             if count.is_none() && k != last {
                 continue;
             }
-            let (theirs, their_change) = source.picture(k, scene)?;
+            let (theirs, their_change) = self.picture(k, scene)?;
             let region = match compared && regional {
                 false => Some(whole(theirs)),
                 true => our_change
@@ -129,45 +171,18 @@ impl Images {
             if tolerance.admits(found.pixels, total) {
                 continue;
             }
-            first = Some(First {
+            return Ok(Some(First {
                 frame: k,
                 what: format!(
                     "{} pixels in x {}–{}, y {}–{}",
                     found.pixels, found.x.0, found.x.1, found.y.0, found.y.1
                 ),
                 picture: want_picture.then(|| diff_picture(ours, palette, theirs, tolerance)),
-            });
-            break;
+            }));
         }
-        if let Source::Gif(timeline) = &source {
-            // A frame shown at the wrong moment differs, even if every picture is right; the
-            // moment is named first, as what makes the picture differ there.
-            if let Some((frame, what)) = timeline.off_beat(scene.frame_ms) {
-                if first.as_ref().is_none_or(|f: &First| frame <= f.frame) {
-                    first = Some(First {
-                        frame,
-                        what,
-                        picture: None,
-                    });
-                }
-            }
-        }
-        Ok(Comparison {
-            frames: count,
-            first,
-        })
+        Ok(None)
     }
-}
 
-/// Where the pictures come from, one per frame of the timeline.
-enum Source<'a> {
-    Gif(Timeline<'a>),
-    /// The files, the one read last, and the memory budget.
-    Folder(&'a [PathBuf], Option<RgbImage>, u64),
-    Still(&'a RgbImage),
-}
-
-impl Source<'_> {
     /// The picture of frame `k` (asked for in increasing order), and where it may have
     /// changed since the last one asked for.
     fn picture(&mut self, k: u32, scene: &Scene) -> Result<(&RgbImage, Option<Rect>), Trouble> {

@@ -1,12 +1,12 @@
 //! A handed-in trajectory: the main command's `--trace` CSV (`frame,ball,x,y,vx,vy`), or the
 //! `x y vx vy` lines the lesson's loop prints for its one ball, frame by frame.
 
-use super::expected::Motion;
-use super::found::{Comparison, First, Trouble};
+use super::expected::ExpectedMotion;
+use super::found::{Finding, First, Trouble};
 use crate::trace::HEADER;
 
 /// Every row of a trajectory, frame by frame and ball by ball within a frame.
-pub struct Trajectory {
+pub struct TrajectoryFile {
     rows: Vec<Row>,
     /// Whether it is the lesson's one-ball lines (no frame or ball numbers).
     plain: bool,
@@ -21,9 +21,9 @@ struct Row {
 
 const NAMES: [&str; 4] = ["x", "y", "vx", "vy"];
 
-impl Trajectory {
+impl TrajectoryFile {
     /// The trajectory in `text`; `None` if it looks like neither kind.
-    pub fn parse(text: &str) -> Option<Result<Trajectory, Trouble>> {
+    pub fn parse(text: &str) -> Option<Result<TrajectoryFile, Trouble>> {
         let mut lines = text
             .lines()
             .enumerate()
@@ -63,7 +63,7 @@ impl Trajectory {
         });
         Some(
             rows.collect::<Result<_, _>>()
-                .map(|rows| Trajectory { rows, plain }),
+                .map(|rows| TrajectoryFile { rows, plain }),
         )
     }
 
@@ -71,10 +71,10 @@ impl Trajectory {
     /// `tolerance` (px, px/frame).
     pub fn compare(
         &self,
-        motion: &mut Motion,
+        motion: &mut ExpectedMotion,
         frames: u32,
         tolerance: f64,
-    ) -> Result<Comparison, Trouble> {
+    ) -> Result<Finding, Trouble> {
         let balls = motion.balls().len();
         if self.plain && balls != 1 {
             return Err(Trouble::PlainLines { balls });
@@ -114,7 +114,7 @@ impl Trajectory {
                 }
             }
         }
-        Ok(Comparison {
+        Ok(Finding {
             frames: Some(theirs),
             first,
         })

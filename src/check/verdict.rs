@@ -6,20 +6,20 @@ use std::path::{Path, PathBuf};
 
 use serde_json::{json, Value};
 
-use super::found::{Comparison, Trouble};
+use super::found::{Finding, Trouble};
 use super::pitfalls::Pitfall;
 use crate::scene::Scene;
 
 /// How a file compares, worst last.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Outcome {
+pub enum Grade {
     Match,
     Differs,
     /// The file could not be graded, or holds another number of frames.
     Trouble,
 }
 
-impl Outcome {
+impl Grade {
     /// 0 for a match, 1 for a difference, 2 for trouble, as `diff` and `cmp` exit.
     pub fn exit_code(self) -> u8 {
         self as u8
@@ -27,9 +27,9 @@ impl Outcome {
 
     pub fn name(self) -> &'static str {
         match self {
-            Outcome::Match => "match",
-            Outcome::Differs => "differs",
-            Outcome::Trouble => "trouble",
+            Grade::Match => "match",
+            Grade::Differs => "differs",
+            Grade::Trouble => "trouble",
         }
     }
 }
@@ -38,7 +38,7 @@ impl Outcome {
 #[derive(Clone, Debug)]
 pub struct Verdict {
     pub path: PathBuf,
-    pub outcome: Outcome,
+    pub grade: Grade,
     /// What is said after the path.
     pub text: String,
     /// The frames it holds (`None` for a still or a file that could not be read).
@@ -49,17 +49,12 @@ pub struct Verdict {
 }
 
 impl Verdict {
-    /// The verdict of a comparison: a match, where it first differs and the mistake it
+    /// The verdict of a finding: a match, where it first differs and the mistake it
     /// looks like, or (trouble) another number of frames, with how the shared ones compare.
-    pub fn of(
-        path: &Path,
-        scene: &Scene,
-        comparison: &Comparison,
-        pitfall: Option<Pitfall>,
-    ) -> Verdict {
+    pub fn of(path: &Path, scene: &Scene, finding: &Finding, pitfall: Option<Pitfall>) -> Verdict {
         let at = |frame: u32| seconds(scene, frame);
-        let mut text = match &comparison.first {
-            None => match comparison.frames {
+        let mut text = match &finding.first {
+            None => match finding.frames {
                 None => format!("match: the last frame (frame {})", scene.frames - 1),
                 Some(n) => format!("match: {n} frames, {}", at(n)),
             },
@@ -75,12 +70,12 @@ impl Verdict {
         if let Some(pitfall) = pitfall {
             text += &format!("; it looks like {}", pitfall.explain());
         }
-        let mut outcome = match comparison.first {
-            None => Outcome::Match,
-            Some(_) => Outcome::Differs,
+        let mut grade = match finding.first {
+            None => Grade::Match,
+            Some(_) => Grade::Differs,
         };
-        if let Some(n) = comparison.frames.filter(|&n| n != scene.frames) {
-            let shared = if comparison.first.is_some() {
+        if let Some(n) = finding.frames.filter(|&n| n != scene.frames) {
+            let shared = if finding.first.is_some() {
                 text
             } else {
                 format!("the {} shared frames match", n.min(scene.frames))
@@ -91,14 +86,14 @@ impl Verdict {
                 scene.frames,
                 at(scene.frames)
             );
-            outcome = Outcome::Trouble;
+            grade = Grade::Trouble;
         }
         Verdict {
             path: path.to_path_buf(),
-            outcome,
+            grade,
             text,
-            frames: comparison.frames,
-            first_difference: comparison.first.as_ref().map(|f| f.frame),
+            frames: finding.frames,
+            first_difference: finding.first.as_ref().map(|f| f.frame),
             pitfall,
         }
     }
@@ -107,7 +102,7 @@ impl Verdict {
     pub fn trouble(path: &Path, trouble: &Trouble) -> Verdict {
         Verdict {
             path: path.to_path_buf(),
-            outcome: Outcome::Trouble,
+            grade: Grade::Trouble,
             text: format!("error: {trouble}"),
             frames: None,
             first_difference: None,
@@ -124,8 +119,8 @@ impl Verdict {
     pub fn json(&self) -> Value {
         json!({
             "file": self.path.display().to_string(),
-            "verdict": self.outcome.name(),
-            "exit_code": self.outcome.exit_code(),
+            "verdict": self.grade.name(),
+            "exit_code": self.grade.exit_code(),
             "message": self.text,
             "frames": self.frames,
             "first_difference": self.first_difference,
@@ -144,12 +139,12 @@ fn seconds(scene: &Scene, frame: u32) -> String {
 
 /// After several files: how many match, differ and are in trouble.
 pub fn summary(verdicts: &[Verdict]) -> String {
-    let count = |outcome| verdicts.iter().filter(|v| v.outcome == outcome).count();
+    let count = |grade| verdicts.iter().filter(|v| v.grade == grade).count();
     format!(
         "{} files: {} match, {} differ, {} in trouble",
         verdicts.len(),
-        count(Outcome::Match),
-        count(Outcome::Differs),
-        count(Outcome::Trouble)
+        count(Grade::Match),
+        count(Grade::Differs),
+        count(Grade::Trouble)
     )
 }

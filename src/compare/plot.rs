@@ -12,6 +12,7 @@ use plotters::prelude::*;
 
 use crate::physics::maths;
 use crate::plot::{use_embedded_font, write_png, Format};
+use crate::scene::Rgb;
 
 use super::draw::COLOURS;
 use super::measure::{Outcome, Role, Trust};
@@ -84,6 +85,9 @@ fn power(value: f64) -> String {
     format!("{value:.0e}")
 }
 
+/// The chart the diagram is drawn in: both axes on log scales.
+type LogChart<'a, DB> = ChartContext<'a, DB, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+
 /// Draws the diagram on `root`.
 fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
@@ -94,28 +98,66 @@ fn draw<DB: DrawingBackend>(
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     root.fill(&WHITE)?;
     let horizon = trust.horizon;
-    // The line past which the reference tells no more: its uncertainty, under which errors
-    // are not resolved, or for colliding balls its horizon, which no method can pass.
-    let (limit, limit_name) = if chaotic {
-        (f64::from(horizon.max(1)), "the reference's horizon")
-    } else {
-        let uncertainty = trust.uncertainty.max(FLOOR_ERROR);
-        (uncertainty, "the reference's uncertainty")
-    };
-    let limit = Some(limit).filter(|l| l.is_finite());
+    let limit = reference_limit(chaotic, trust);
     let x_range = log_range(
         outcomes.iter().flat_map(|o| [o.timing.min, o.timing.max]),
         2.0,
     );
     // Room above for the lesson's ring, drawn 13 px around its point.
     let values = judged(outcomes).map(|(_, o)| value(o, chaotic, horizon));
-    let y_range = log_range(values.chain(limit), 4.0);
+    let y_range = log_range(values.chain(limit.map(|(y, _)| y)), 4.0);
     let mut chart = ChartBuilder::on(root)
         .margin(16)
         .caption(title, ("sans-serif", 17))
         .x_label_area_size(44)
         .y_label_area_size(80)
         .build_cartesian_2d(x_range.clone().log_scale(), y_range.log_scale())?;
+    draw_axes(&mut chart, chaotic)?;
+    if let Some((y, name)) = limit {
+        let grey = RGBColor(150, 150, 150);
+        let across = vec![(x_range.start, y), (x_range.end, y)];
+        chart
+            .draw_series([PathElement::new(across, grey.stroke_width(2))])?
+            .label(name)
+            .legend(move |(x, y)| PathElement::new(vec![(x - 6, y), (x + 6, y)], grey));
+    }
+    for (k, outcome) in judged(outcomes) {
+        draw_method(
+            &mut chart,
+            COLOURS[k],
+            outcome,
+            value(outcome, chaotic, horizon),
+        )?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .label_font(("sans-serif", 13))
+        .background_style(WHITE.mix(0.9))
+        .border_style(RGBColor(200, 200, 200))
+        .draw()?;
+    root.present()
+}
+
+/// The line past which the reference tells no more, and its name: its uncertainty, under
+/// which errors are not resolved, or for colliding balls its horizon, which no method can
+/// pass. `None` where it is not finite (a reference of one run).
+fn reference_limit(chaotic: bool, trust: Trust) -> Option<(f64, &'static str)> {
+    let limit = if chaotic {
+        (f64::from(trust.horizon.max(1)), "the reference's horizon")
+    } else {
+        let uncertainty = trust.uncertainty.max(FLOOR_ERROR);
+        (uncertainty, "the reference's uncertainty")
+    };
+    Some(limit).filter(|(y, _)| y.is_finite())
+}
+
+/// The grid and the axes' labels: time along the bottom, error (or, for colliding balls,
+/// frames kept close) up the side.
+fn draw_axes<DB: DrawingBackend>(
+    chart: &mut LogChart<DB>,
+    chaotic: bool,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     let y_desc = if chaotic {
         "frames before a ball is more than a radius off (higher is better)"
     } else {
@@ -133,48 +175,39 @@ fn draw<DB: DrawingBackend>(
         .axis_desc_style(("sans-serif", 14))
         .max_light_lines(0)
         .bold_line_style(RGBColor(230, 230, 230))
-        .draw()?;
-    if let Some(y) = limit {
-        let grey = RGBColor(150, 150, 150);
-        let across = vec![(x_range.start, y), (x_range.end, y)];
-        chart
-            .draw_series([PathElement::new(across, grey.stroke_width(2))])?
-            .label(limit_name)
-            .legend(move |(x, y)| PathElement::new(vec![(x - 6, y), (x + 6, y)], grey));
+        .draw()
+}
+
+/// One method at height `y` in its GIF colour `[r, g, b]`: its min–max timing as a bar, its
+/// median as a point (ringed if it is the lesson's), and its entry in the legend.
+fn draw_method<DB: DrawingBackend>(
+    chart: &mut LogChart<DB>,
+    [r, g, b]: Rgb,
+    outcome: &Outcome,
+    y: f64,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let colour = RGBColor(r, g, b);
+    let (x, timing) = (outcome.timing.median, &outcome.timing);
+    chart.draw_series([PathElement::new(
+        vec![(timing.min, y), (timing.max, y)],
+        colour.stroke_width(3),
+    )])?;
+    let lesson = outcome.method == LESSON;
+    if lesson {
+        chart.draw_series([Circle::new((x, y), 13, BLACK.stroke_width(2))])?;
     }
-    for (k, outcome) in judged(outcomes) {
-        let [r, g, b] = COLOURS[k];
-        let colour = RGBColor(r, g, b);
-        let y = value(outcome, chaotic, horizon);
-        let (x, timing) = (outcome.timing.median, &outcome.timing);
-        chart.draw_series([PathElement::new(
-            vec![(timing.min, y), (timing.max, y)],
-            colour.stroke_width(3),
-        )])?;
-        let lesson = outcome.method == LESSON;
-        if lesson {
-            chart.draw_series([Circle::new((x, y), 13, BLACK.stroke_width(2))])?;
-        }
-        let name = match lesson {
-            true => format!("{}  (the lesson's, ringed)", outcome.method),
-            false => outcome.method.to_string(),
-        };
-        chart
-            .draw_series([
-                Circle::new((x, y), 7, colour.filled()),
-                Circle::new((x, y), 7, BLACK.stroke_width(1)),
-            ])?
-            .label(name)
-            .legend(move |(x, y)| Circle::new((x, y), 6, colour.filled()));
-    }
+    let name = match lesson {
+        true => format!("{}  (the lesson's, ringed)", outcome.method),
+        false => outcome.method.to_string(),
+    };
     chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .label_font(("sans-serif", 13))
-        .background_style(WHITE.mix(0.9))
-        .border_style(RGBColor(200, 200, 200))
-        .draw()?;
-    root.present()
+        .draw_series([
+            Circle::new((x, y), 7, colour.filled()),
+            Circle::new((x, y), 7, BLACK.stroke_width(1)),
+        ])?
+        .label(name)
+        .legend(move |(x, y)| Circle::new((x, y), 6, colour.filled()));
+    Ok(())
 }
 
 /// Writes the diagram to `out` as `format`.

@@ -61,7 +61,7 @@ pub struct Reference {
     /// apart, from where the reference no longer says where the balls are; the frame count
     /// if there is none. No method is judged from here on.
     pub horizon: u32,
-    pub verdict: Verdict,
+    pub convergence: Convergence,
     /// The finest listed method's substeps: the reference has more, unless [`Reference::limited`].
     pub finest: u32,
     /// Whether the work or substep limit stopped the doubling.
@@ -70,7 +70,7 @@ pub struct Reference {
 
 /// How the doubling ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Verdict {
+pub enum Convergence {
     /// Two runs in a row agreed to [`REFERENCE_AGREEMENT`].
     Converged,
     /// A doubling did not even halve the difference: the runs are not closing in on one
@@ -105,12 +105,12 @@ impl Reference {
         let mut trajectory = run(scene, method, job)?;
         let mut uncertainty = vec![f64::INFINITY; scene.frames as usize];
         let mut horizon = 0;
-        let mut verdict = Verdict::Unchecked;
+        let mut convergence = Convergence::Unchecked;
         let mut limited = false;
         // Once the doubling has converged or stalled, only the "finer than every method"
-        // rule asks for more; a finer run no longer changes the verdict.
-        let settled = |v: Verdict| matches!(v, Verdict::Converged | Verdict::Stalled);
-        while !(settled(verdict) && method.substeps > finest) {
+        // rule asks for more; a finer run no longer changes whether it converged.
+        let settled = |v: Convergence| matches!(v, Convergence::Converged | Convergence::Stalled);
+        while !(settled(convergence) && method.substeps > finest) {
             let finer = rk4(method.substeps * 2);
             if finer.substeps > most {
                 limited = true;
@@ -120,13 +120,13 @@ impl Reference {
             let before = largest(&uncertainty);
             (uncertainty, horizon) = apart(&next, &trajectory, scene);
             let agreement = largest(&uncertainty);
-            if !settled(verdict) {
-                verdict = if agreement <= REFERENCE_AGREEMENT {
-                    Verdict::Converged
+            if !settled(convergence) {
+                convergence = if agreement <= REFERENCE_AGREEMENT {
+                    Convergence::Converged
                 } else if agreement > before / 2.0 {
-                    Verdict::Stalled
+                    Convergence::Stalled
                 } else {
-                    Verdict::Converging
+                    Convergence::Converging
                 };
             }
             (method, trajectory) = (finer, next);
@@ -136,7 +136,7 @@ impl Reference {
             horizon,
             trajectory,
             uncertainty,
-            verdict,
+            convergence,
             finest,
             limited,
         })
@@ -174,7 +174,7 @@ impl Reference {
     pub fn describe(&self) -> Vec<String> {
         let frames = self.uncertainty.len();
         let mut lines = vec![self.agreement()];
-        if self.verdict == Verdict::Unchecked {
+        if self.convergence == Convergence::Unchecked {
             return lines;
         }
         lines.push(if self.horizon as usize >= frames {
@@ -201,16 +201,16 @@ impl Reference {
 
     /// The first line of [`Reference::describe`]: how closely the last doubling agreed.
     fn agreement(&self) -> String {
-        if self.verdict == Verdict::Unchecked {
+        if self.convergence == Convergence::Unchecked {
             return format!(
                 "{}: not checked against a finer run (one would pass the work limit), so no method is judged",
                 self.method
             );
         }
         let half = rk4(self.method.substeps / 2);
-        let verdict = match self.verdict {
-            Verdict::Converged => "converged",
-            Verdict::Stalled => "not converging: doubling the substeps no longer halves the difference, as when balls that collide part chaotically",
+        let verdict = match self.convergence {
+            Convergence::Converged => "converged",
+            Convergence::Stalled => "not converging: doubling the substeps no longer halves the difference, as when balls that collide part chaotically",
             _ => "not converged: the next doubling would pass the work limit",
         };
         format!(

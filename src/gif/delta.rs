@@ -4,9 +4,9 @@
 //!
 //! Knows frames of palette indices, nothing of balls and nothing of GIF.
 
-use crate::physics::work::{tally_many, Work};
 pub use crate::render::dirty::{paste, Rect};
 use crate::render::IndexedFrame;
+use crate::work::{tally_many, Work};
 
 /// The smallest rectangle outside which `previous` and `current` are equal; `None` when the
 /// two frames are identical. Both must be the same size.

@@ -1,29 +1,16 @@
 //! The ball: its state, the lesson's `step()` and its bounded trail.
 //!
 //! `Ball::step` is the lesson's loop, line for line: gravity changes the velocity, the velocity
-//! moves the ball, the four walls clamp then reflect, the new position joins the trail. The
-//! general solver (integrators, substeps, exact collisions, floors, ball-ball contacts) lives
-//! beside it in `motion` and `simulation`, and with the default settings gives the same numbers.
+//! moves the ball, the four walls clamp then reflect, the new position joins the trail. Beyond
+//! the lesson, `motion` and `simulation` pick the general solver a scene needs and run it: the
+//! integrators and substeps in `integrate`, the floors in `floor`, ball-ball contacts in
+//! `contacts` and `events`. With the default settings it gives the same numbers. Last come a
+//! ball's mass and the balls' kinetic energy, which those solvers and `compare` work with.
 
 use std::collections::VecDeque;
 
 use super::vec2::Vec2;
 use super::walls::Walls;
-
-/// The mass of a ball of `radius` px: balls are flat discs of one density, so mass grows as
-/// the radius squared (the unit cancels in every collision, so none is named).
-pub fn mass(radius: f64) -> f64 {
-    radius * radius
-}
-
-/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' [`mass`] (flat discs of equal density):
-/// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
-pub fn kinetic_energy(balls: &[Ball]) -> f64 {
-    balls
-        .iter()
-        .map(|b| 0.5 * mass(b.radius) * b.velocity().length_squared())
-        .sum()
-}
 
 /// One ball, in the lesson's units: pixels and frames.
 #[derive(Clone, Debug, PartialEq)]
@@ -112,9 +99,10 @@ impl Ball {
     /// Appends the current position to the trail. After the move, so the trail ends where the
     /// ball is drawn (reflection question 3).
     pub fn record_trail(&mut self) {
-        self.trail.push(self.x, self.y);
+        self.trail.push(self.position());
     }
 }
+
 /// The last few positions of a ball, oldest first, never more than its capacity.
 ///
 /// A trail that keeps no points is a single empty pointer, so a ball without one is 48 bytes
@@ -128,12 +116,12 @@ pub struct Trail {
 /// The points of a trail that keeps some, and how many it keeps.
 #[derive(Clone, Debug, PartialEq)]
 struct Ring {
-    points: VecDeque<(f64, f64)>,
+    points: VecDeque<Vec2>,
     capacity: usize,
 }
 
 /// The points of a trail that keeps none.
-static NO_POINTS: VecDeque<(f64, f64)> = VecDeque::new();
+static NO_POINTS: VecDeque<Vec2> = VecDeque::new();
 
 impl Trail {
     /// An empty trail that keeps at most `capacity` points (0 keeps none).
@@ -154,7 +142,7 @@ impl Trail {
             return 0;
         }
         let buffer = (capacity as u64 + 1).next_power_of_two().max(4);
-        size_of::<Ring>() as u64 + buffer * size_of::<(f64, f64)>() as u64
+        size_of::<Ring>() as u64 + buffer * size_of::<Vec2>() as u64
     }
 
     /// Whether it keeps any points at all (its capacity is not 0).
@@ -163,11 +151,11 @@ impl Trail {
     }
 
     /// Adds the newest point and drops the oldest beyond capacity, so memory stays bounded.
-    pub fn push(&mut self, x: f64, y: f64) {
+    pub fn push(&mut self, point: Vec2) {
         let Some(ring) = &mut self.ring else {
             return; // a trail that keeps nothing: not even a buffer to cycle through
         };
-        ring.points.push_back((x, y));
+        ring.points.push_back(point);
         if ring.points.len() > ring.capacity {
             ring.points.pop_front();
         }
@@ -184,11 +172,26 @@ impl Trail {
     }
 
     /// The points, oldest first.
-    pub fn iter(&self) -> impl ExactSizeIterator<Item = &(f64, f64)> + '_ {
+    pub fn iter(&self) -> impl ExactSizeIterator<Item = &Vec2> + '_ {
         self.points().iter()
     }
 
-    fn points(&self) -> &VecDeque<(f64, f64)> {
+    fn points(&self) -> &VecDeque<Vec2> {
         self.ring.as_ref().map_or(&NO_POINTS, |ring| &ring.points)
     }
+}
+
+/// The mass of a ball of `radius` px: balls are flat discs of one density, so mass grows as
+/// the radius squared (the unit cancels in every collision, so none is named).
+pub fn mass(radius: f64) -> f64 {
+    radius * radius
+}
+
+/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' [`mass`] (flat discs of equal density):
+/// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
+pub fn kinetic_energy(balls: &[Ball]) -> f64 {
+    balls
+        .iter()
+        .map(|b| 0.5 * mass(b.radius) * b.velocity().length_squared())
+        .sum()
 }

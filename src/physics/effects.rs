@@ -4,7 +4,7 @@ use super::ball::Ball;
 use super::floor::Floor;
 use super::vec2::Vec2;
 use super::walls::Walls;
-use super::work::{tally, Work};
+use crate::work::{tally, Work};
 
 /// The forces and boundaries that act on every ball, each present only if the scene names it.
 #[derive(Clone, Debug, Default, PartialEq)]

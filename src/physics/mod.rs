@@ -19,8 +19,8 @@
 //! - [`events`]: ball-ball collisions in exact mode, event by event.
 //!
 //! Shared by all: [`vec2`] (the 2-D vector), [`maths`] (transcendental functions, the same
-//! bits on every system), [`tolerances`] (every tolerance with its unit and reason), [`work`]
-//! (counting the work each effect does, for the tests).
+//! bits on every system), [`tolerances`] (every tolerance with its unit and reason). The work
+//! each effect does is counted for the tests in [`crate::work`].
 
 pub mod ball;
 pub mod contacts;
@@ -34,7 +34,6 @@ pub mod simulation;
 pub mod tolerances;
 pub mod vec2;
 pub mod walls;
-pub mod work;
 
 pub use ball::{Ball, Trail};
 pub use effects::Effects;

@@ -12,7 +12,7 @@ use super::events::system::{EventCounts, EventDriven};
 use super::integrate::integrator::Integrator;
 use super::motion::{CollisionMode, Motion};
 use super::walls::Walls;
-use super::work::{tally, Work};
+use crate::work::{tally, Work};
 
 /// The moving state of a scene.
 #[derive(Clone, Debug)]
@@ -132,7 +132,7 @@ impl Simulation {
     }
 
     /// Counts the lesson's steps, and the gravity and walls they applied (with the
-    /// `work-tally` feature; see `super::work`).
+    /// `work-tally` feature; see `crate::work`).
     fn tally_lesson_steps(&self) {
         for _ in &self.balls {
             tally(Work::LessonStep);

@@ -49,6 +49,15 @@ impl Vec2 {
         self.to_array()[axis]
     }
 
+    /// The vector with `along` on `axis` (0 for `x`, 1 for `y`) and `across` on the other:
+    /// [`Vec2::axis`] the other way round.
+    pub fn from_axes(axis: usize, along: f64, across: f64) -> Vec2 {
+        match axis {
+            0 => Vec2::new(along, across),
+            _ => Vec2::new(across, along),
+        }
+    }
+
     /// As an array `[x, y]`, for code that indexes by axis.
     pub fn to_array(self) -> [f64; 2] {
         [self.x, self.y]
@@ -134,5 +143,9 @@ mod tests {
         assert_eq!(Vec2::new(3.0, 4.0).length(), 5.0);
         assert_eq!(Vec2::from([1.0, 2.0]).to_array(), [1.0, 2.0]);
         assert_eq!((a.axis(0), a.axis(1)), (a.x, a.y));
+        assert_eq!(
+            (Vec2::from_axes(0, 1.0, 2.0), Vec2::from_axes(1, 1.0, 2.0)),
+            (Vec2::new(1.0, 2.0), Vec2::new(2.0, 1.0))
+        );
     }
 }

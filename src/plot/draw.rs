@@ -7,7 +7,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::record::{Panel, Recording, Series};
+use super::record::{PlotPanel, Recording, Series};
 
 use crate::physics::maths;
 
@@ -30,8 +30,8 @@ const COLOURS: [RGBColor; 4] = [
 const BOUNCE: RGBColor = RGBColor(170, 170, 170);
 
 /// The panels the recording has, top to bottom.
-fn panels(recording: &Recording) -> Vec<Panel> {
-    let mut panels: Vec<Panel> = recording.series.iter().map(|s| s.panel).collect();
+fn panels(recording: &Recording) -> Vec<PlotPanel> {
+    let mut panels: Vec<PlotPanel> = recording.series.iter().map(|s| s.panel).collect();
     panels.sort();
     panels.dedup();
     panels
@@ -106,7 +106,7 @@ fn tick_label(span: f64) -> impl Fn(&f64) -> String {
 fn draw_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     recording: &Recording,
-    panel: Panel,
+    panel: PlotPanel,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     let (chart_area, legend_area) = area.split_horizontally(WIDTH - LEGEND_WIDTH);
     let in_panel: Vec<(usize, &Series)> = recording
@@ -159,8 +159,16 @@ fn draw_panel<DB: DrawingBackend>(
     if !recording.bounces.is_empty() {
         legend.push(("bounce (moving up again)", BOUNCE.stroke_width(1), true));
     }
+    draw_legend(&legend_area, legend)
+}
 
-    let text = ("sans-serif", 13).into_text_style(&legend_area);
+/// A panel's legend strip: each entry's name beside a sample of its line, upright for an
+/// entry drawn upright in the chart (the bounce marks).
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    legend: Vec<(&str, ShapeStyle, bool)>,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let text = ("sans-serif", 13).into_text_style(area);
     for (row, (name, style, upright)) in legend.into_iter().enumerate() {
         let y = 30 + 22 * row as i32;
         let sample = if upright {
@@ -168,8 +176,8 @@ fn draw_panel<DB: DrawingBackend>(
         } else {
             vec![(0, y), (24, y)]
         };
-        legend_area.draw(&PathElement::new(sample, style))?;
-        legend_area.draw_text(name, &text.pos(Pos::new(HPos::Left, VPos::Center)), (32, y))?;
+        area.draw(&PathElement::new(sample, style))?;
+        area.draw_text(name, &text.pos(Pos::new(HPos::Left, VPos::Center)), (32, y))?;
     }
     Ok(())
 }

@@ -26,6 +26,7 @@ use plotters::style::{register_font, FontStyle};
 
 use crate::output::{commit_all, AtomicFile, OutputError};
 use crate::physics::ball::Ball;
+use crate::physics::vec2::Vec2;
 use crate::scene::{InvalidValue, Scene};
 use record::Recording;
 
@@ -111,15 +112,16 @@ impl Plot {
 }
 
 /// A plotters drawing area over an RGB buffer, and what drawing on it can fail with.
-pub type Canvas<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
-pub type CanvasError = DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>;
+pub type BitmapArea<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
+pub type BitmapAreaError =
+    DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>;
 
 /// Lets `draw` paint on a white canvas of `size` px and saves it as a PNG at `path`, whole
 /// or not at all: the accuracy study's plots.
 pub fn save_png(
     path: &Path,
     size: (u32, u32),
-    draw: impl FnOnce(&Canvas) -> Result<(), CanvasError>,
+    draw: impl FnOnce(&BitmapArea) -> Result<(), BitmapAreaError>,
 ) -> Result<(), OutputError> {
     let file = AtomicFile::create(path)?;
     write_png(file.file(), size, |root| {
@@ -136,7 +138,7 @@ pub fn save_png(
 pub fn write_png(
     out: impl Write,
     size: (u32, u32),
-    draw: impl FnOnce(&Canvas) -> Result<(), CanvasError>,
+    draw: impl FnOnce(&BitmapArea) -> Result<(), BitmapAreaError>,
 ) -> io::Result<()> {
     use_embedded_font()?;
     let mut rgb = vec![0u8; size.0 as usize * size.1 as usize * 3];
@@ -166,8 +168,8 @@ fn settings(scene: &Scene) -> Vec<String> {
             None => "no walls".to_string(),
         },
         match scene.gravity {
-            Some([0.0, g]) => format!("gravity {g} px/frame²"),
-            Some([gx, gy]) => format!("gravity ({gx}, {gy}) px/frame²"),
+            Some(Vec2 { x: 0.0, y: g }) => format!("gravity {g} px/frame²"),
+            Some(Vec2 { x: gx, y: gy }) => format!("gravity ({gx}, {gy}) px/frame²"),
             None => "no gravity".to_string(),
         },
     ];

@@ -8,11 +8,12 @@ use crate::physics::ball::kinetic_energy;
 use crate::physics::ball::Ball;
 use crate::physics::contacts::Grid;
 use crate::physics::maths;
+use crate::physics::vec2::Vec2;
 use crate::scene::Scene;
 
 /// The panel a series is drawn in, top to bottom in this order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Panel {
+pub enum PlotPanel {
     Height,
     Speed,
     Energy,
@@ -20,15 +21,15 @@ pub enum Panel {
     Overlap,
 }
 
-impl Panel {
+impl PlotPanel {
     /// The panel's vertical axis, with units.
     pub fn axis(self) -> &'static str {
         match self {
-            Panel::Height => "height above the floor, px",
-            Panel::Speed => "speed, px/frame",
-            Panel::Energy => "energy per unit mass, px²/frame²",
-            Panel::TotalEnergy => "all balls' energy, px²/frame²",
-            Panel::Overlap => "deepest overlap, px",
+            PlotPanel::Height => "height above the floor, px",
+            PlotPanel::Speed => "speed, px/frame",
+            PlotPanel::Energy => "energy per unit mass, px²/frame²",
+            PlotPanel::TotalEnergy => "all balls' energy, px²/frame²",
+            PlotPanel::Overlap => "deepest overlap, px",
         }
     }
 }
@@ -37,7 +38,7 @@ impl Panel {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Series {
     pub name: &'static str,
-    pub panel: Panel,
+    pub panel: PlotPanel,
     pub values: Vec<f64>,
 }
 
@@ -51,7 +52,7 @@ pub struct Recording {
     /// The box the potential energy is measured in, px.
     width: f64,
     height: f64,
-    gravity: [f64; 2],
+    gravity: Vec2,
     /// Each ball's mass as a share of the average ball's (mass ∝ radius², as in collisions).
     mean_mass: f64,
     /// Finds the overlapping pairs, when the scene has ball-ball collisions and many balls.
@@ -76,7 +77,7 @@ impl Overlaps {
     }
 }
 
-fn series(name: &'static str, panel: Panel) -> Series {
+fn series(name: &'static str, panel: PlotPanel) -> Series {
     Series {
         name,
         panel,
@@ -91,18 +92,18 @@ impl Recording {
         let one_ball = scene.balls.len() == 1;
         let series = if one_ball {
             vec![
-                series("height", Panel::Height),
-                series("speed", Panel::Speed),
-                series("kinetic + potential", Panel::Energy),
+                series("height", PlotPanel::Height),
+                series("speed", PlotPanel::Speed),
+                series("kinetic + potential", PlotPanel::Energy),
             ]
         } else {
             let mut all = vec![
-                series("kinetic, Σ m·|v|²/2", Panel::TotalEnergy),
-                series("potential, Σ m·g·h", Panel::TotalEnergy),
-                series("kinetic + potential", Panel::TotalEnergy),
+                series("kinetic, Σ m·|v|²/2", PlotPanel::TotalEnergy),
+                series("potential, Σ m·g·h", PlotPanel::TotalEnergy),
+                series("kinetic + potential", PlotPanel::TotalEnergy),
             ];
             if scene.ball_collisions.is_some() {
-                all.push(series("deepest overlap", Panel::Overlap));
+                all.push(series("deepest overlap", PlotPanel::Overlap));
             }
             all
         };
@@ -112,7 +113,7 @@ impl Recording {
             bounces: Vec::new(),
             width: f64::from(scene.width),
             height: f64::from(scene.height),
-            gravity: scene.gravity.unwrap_or([0.0, 0.0]),
+            gravity: scene.gravity.unwrap_or(Vec2::ZERO),
             mean_mass: masses / scene.balls.len().max(1) as f64,
             overlaps: (!one_ball && scene.ball_collisions.is_some()).then(Overlaps::default),
             last_vy: None,
@@ -135,7 +136,7 @@ impl Recording {
     /// still fall along it before touching the walls gravity pulls it towards (for the
     /// lesson's downward gravity, `g·h` with `h` the height above the floor).
     pub fn potential(&self, ball: &Ball) -> f64 {
-        let [gx, gy] = self.gravity;
+        let Vec2 { x: gx, y: gy } = self.gravity;
         let rest = |g: f64, side: f64| {
             if g < 0.0 {
                 ball.radius

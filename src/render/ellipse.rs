@@ -20,7 +20,7 @@
 
 use super::dirty::Rect;
 use super::palette::IndexedFrame;
-use crate::physics::work::{tally_many, Work};
+use crate::work::{tally_many, Work};
 
 /// Circles this wide or wider are not drawn. A scene's radius is under half its canvas side
 /// (at most 8,192 px), so this is never reached; it keeps the trace's sums of products

@@ -18,8 +18,8 @@ use super::palette::{
 use crate::physics::ball::Ball;
 use crate::physics::floor::Floor;
 use crate::physics::vec2::Vec2;
-use crate::physics::work::{tally_many, Work};
 use crate::scene::spec::{Rgb, Scene};
+use crate::work::{tally_many, Work};
 
 /// Draws a scene's balls with the scene's colours.
 #[derive(Clone, Debug)]
@@ -109,21 +109,6 @@ impl Renderer {
             .collect();
         let new_index = palette.reorder(&stages(&always, &tables, &kinds));
         let renumber = |index: u8| new_index[usize::from(index)];
-
-        let tables: Vec<Arc<[u8]>> = tables
-            .iter()
-            .map(|table| table.shades.iter().copied().map(renumber).collect())
-            .collect();
-        let styles = balls
-            .into_iter()
-            .zip(table_of_ball)
-            .zip(&scene.balls)
-            .map(|((ball, table), spec)| BallStyle {
-                ball: renumber(ball),
-                trail_shades: Arc::clone(&tables[table]),
-                most_dots: drawn_dots(spec.trail).len(),
-            })
-            .collect();
         Ok(Renderer {
             width: scene.width,
             height: scene.height,
@@ -131,7 +116,7 @@ impl Renderer {
             background: renumber(background),
             floors: scene.floors.clone(),
             floor: renumber(floor),
-            styles,
+            styles: ball_styles(scene, &balls, &tables, &table_of_ball, renumber),
             look,
         })
     }
@@ -163,11 +148,10 @@ impl Renderer {
     pub fn draw_background(&self, frame: &mut IndexedFrame) {
         frame.fill(self.background);
         tally_many(Work::PixelsDrawn, frame.as_raw().len() as u64);
-        let canvas = [f64::from(self.width), f64::from(self.height)];
+        let canvas = Vec2::new(f64::from(self.width), f64::from(self.height));
         for floor in &self.floors {
-            let [from, to] = floor.ends().map(Vec2::to_array);
-            if let Some((from, to)) = clip_segment(from, to, canvas) {
-                let point = |[x, y]: [f64; 2]| (x as f32, y as f32);
+            if let Some((from, to)) = clip_segment(floor.from, floor.to, canvas) {
+                let point = |p: Vec2| (p.x as f32, p.y as f32);
                 draw_line(frame, point(from), point(to), self.floor);
             }
         }
@@ -193,9 +177,9 @@ impl Renderer {
     pub fn trail_dots<'a>(&'a self, i: usize, ball: &'a Ball) -> impl Iterator<Item = Circle> + 'a {
         let (style, n) = (&self.styles[i], ball.trail.len());
         let dots = ball.trail.iter().take(drawn_dots(n).end).enumerate();
-        dots.map(move |(i, &(x, y))| Circle {
-            x,
-            y,
+        dots.map(move |(i, &point)| Circle {
+            x: point.x,
+            y: point.y,
             radius: ball.radius * self.look.size_share(i, n),
             index: style.trail_shade(i, n),
         })
@@ -234,6 +218,32 @@ impl GrowingPalette {
         let too_many = TooManyColours { needed: self.solid };
         self.palette.insert(colour).ok_or(too_many)
     }
+}
+
+/// Each ball's style, given its colour's index (`balls`) and its shade table's number
+/// (`table_of_ball`), every index renumbered by `renumber`. Balls of one trail colour share
+/// their table's renumbered shades.
+fn ball_styles(
+    scene: &Scene,
+    balls: &[u8],
+    tables: &[ShadeTable],
+    table_of_ball: &[usize],
+    renumber: impl Fn(u8) -> u8,
+) -> Vec<BallStyle> {
+    let tables: Vec<Arc<[u8]>> = tables
+        .iter()
+        .map(|table| table.shades.iter().map(|&index| renumber(index)).collect())
+        .collect();
+    balls
+        .iter()
+        .zip(table_of_ball)
+        .zip(&scene.balls)
+        .map(|((&ball, &table), spec)| BallStyle {
+            ball: renumber(ball),
+            trail_shades: Arc::clone(&tables[table]),
+            most_dots: drawn_dots(spec.trail).len(),
+        })
+        .collect()
 }
 
 /// One shade table per trail colour, in the order the balls first use them, each sized for
@@ -301,31 +311,28 @@ fn insert_shades(
 /// (`canvas` = width, height), in floating point: the line is walked along the longer axis pixel by
 /// pixel, so a floor from -1e30 to 1e30 then costs no more than one across the canvas.
 /// `None` when it misses the canvas along that axis. Ends already inside stay, to the bit.
-fn clip_segment(from: [f64; 2], to: [f64; 2], canvas: [f64; 2]) -> Option<([f64; 2], [f64; 2])> {
-    let delta = [to[0] - from[0], to[1] - from[1]];
-    let (major, minor) = if delta[1].abs() > delta[0].abs() {
+fn clip_segment(from: Vec2, to: Vec2, canvas: Vec2) -> Option<(Vec2, Vec2)> {
+    let delta = to - from;
+    let (major, minor) = if delta.y.abs() > delta.x.abs() {
         (1, 0)
     } else {
         (0, 1)
     };
-    let (low, high) = (-1.0, canvas[major] + 1.0);
-    if from[major].max(to[major]) < low || from[major].min(to[major]) > high {
+    let (low, high) = (-1.0, canvas.axis(major) + 1.0);
+    if from.axis(major).max(to.axis(major)) < low || from.axis(major).min(to.axis(major)) > high {
         return None;
     }
     // The line as `minor = intercept + slope * major`, |slope| <= 1. Floating point cannot
     // place a line finer than the last bit of its far ends, but in this form lines such as
     // y = 120 or y = x with ends at ±1e30 come out exact.
-    let slope = delta[minor] / delta[major];
-    let intercept = from[minor] - slope * from[major];
-    let cut = |end: [f64; 2]| {
-        let along = end[major].clamp(low, high);
-        if along == end[major] {
+    let slope = delta.axis(minor) / delta.axis(major);
+    let intercept = from.axis(minor) - slope * from.axis(major);
+    let cut = |end: Vec2| {
+        let along = end.axis(major).clamp(low, high);
+        if along == end.axis(major) {
             return end;
         }
-        let mut point = [0.0; 2];
-        point[major] = along;
-        point[minor] = intercept + slope * along;
-        point
+        Vec2::from_axes(major, along, intercept + slope * along)
     };
     Some((cut(from), cut(to)))
 }

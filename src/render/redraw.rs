@@ -29,7 +29,8 @@ use super::ellipse::{fill_box, PixelBox};
 use super::palette::{drawn_dots, IndexedFrame};
 use super::raster::Renderer;
 use crate::physics::ball::Ball;
-use crate::physics::work::{tally_many, Work};
+use crate::physics::vec2::Vec2;
+use crate::work::{tally_many, Work};
 
 /// What changed in a frame since the frame before it on the same canvas.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,7 +55,7 @@ pub struct Canvas {
     runs: Vec<Rect>,
     /// One ball's boxes, as it draws them now.
     boxes: Vec<PixelBox>,
-    change: Change,
+    redrawn: Redrawn,
     /// Frames still to draw whole without looking at what changed, and how many the last
     /// busy spell drew ([`Canvas::busy`]).
     busy: u32,
@@ -65,10 +66,10 @@ pub struct Canvas {
 /// a scene that calms down is drawn only where it changes.
 pub const MOST_BUSY_FRAMES: u32 = 8;
 
-/// How the last frame was drawn.
+/// What the last frame drew again: nothing, the whole frame, or the runs of marked tiles.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Change {
-    Unchanged,
+enum Redrawn {
+    Nothing,
     Whole,
     Runs,
 }
@@ -85,7 +86,7 @@ impl Canvas {
             drawn: Drawn::new(renderer.most_dots()),
             runs: Vec::new(),
             boxes: Vec::new(),
-            change: Change::Whole,
+            redrawn: Redrawn::Whole,
             busy: 0,
             backoff: 0,
         }
@@ -107,27 +108,27 @@ impl Canvas {
 
     /// What the last [`Canvas::redraw`] changed.
     pub fn damage(&self) -> Damage<'_> {
-        match self.change {
-            Change::Unchanged => Damage::Unchanged,
-            Change::Whole => Damage::Whole,
-            Change::Runs => Damage::Areas(&self.runs),
+        match self.redrawn {
+            Redrawn::Nothing => Damage::Unchanged,
+            Redrawn::Whole => Damage::Whole,
+            Redrawn::Runs => Damage::Areas(&self.runs),
         }
     }
 
     /// Draws `balls` as `renderer` does, pixel for pixel, drawing again only what changed
     /// since the last frame (all of it the first time).
     pub fn redraw(&mut self, renderer: &Renderer, balls: &[Ball]) {
-        self.change = match self.busy.checked_sub(1) {
+        self.redrawn = match self.busy.checked_sub(1) {
             Some(left) => {
                 self.busy = left;
-                Change::Whole
+                Redrawn::Whole
             }
             None => self.note_changes(renderer, balls),
         };
-        match self.change {
-            Change::Unchanged => {}
-            Change::Whole => renderer.draw(balls, &mut self.frame),
-            Change::Runs => self.redraw_runs(renderer, balls),
+        match self.redrawn {
+            Redrawn::Nothing => {}
+            Redrawn::Whole => renderer.draw(balls, &mut self.frame),
+            Redrawn::Runs => self.redraw_runs(renderer, balls),
         }
         self.tiles.clear();
     }
@@ -135,7 +136,7 @@ impl Canvas {
     /// Records what each of `balls` draws now, and marks the tiles under the old and new
     /// rectangles of every ball that changed, unless so much is marked that the whole frame
     /// is to be drawn (then [`Canvas::busy`]).
-    fn note_changes(&mut self, renderer: &Renderer, balls: &[Ball]) -> Change {
+    fn note_changes(&mut self, renderer: &Renderer, balls: &[Ball]) -> Redrawn {
         let fresh = !self.drawn.valid || balls.len() != self.drawn.trails.len();
         self.drawn.valid = true;
         let mut changed = fresh;
@@ -167,13 +168,13 @@ impl Canvas {
         }
         if !changed {
             self.backoff = 0;
-            return Change::Unchanged;
+            return Redrawn::Nothing;
         }
         if fresh {
-            return Change::Whole;
+            return Redrawn::Whole;
         }
         self.backoff = 0;
-        Change::Runs
+        Redrawn::Runs
     }
 
     /// Puts the boxes of every circle ball `i`, `ball`, draws now in `self.boxes`.
@@ -192,11 +193,11 @@ impl Canvas {
     /// looking at what changed, twice as many each time in a row (up to [`MOST_BUSY_FRAMES`]),
     /// so a scene that keeps moving all over pays for the looking only now and then. The
     /// records go out of date, and the first frame after is recorded afresh.
-    fn busy(&mut self) -> Change {
+    fn busy(&mut self) -> Redrawn {
         self.drawn.valid = false;
         self.backoff = (2 * self.backoff).clamp(1, MOST_BUSY_FRAMES);
         self.busy = self.backoff;
-        Change::Whole
+        Redrawn::Whole
     }
 
     /// Marks the tiles under the rectangle holding every circle ball `i` drew as recorded.
@@ -243,7 +244,7 @@ impl Still {
     /// `None` when some trail point lies off the ball's centre.
     fn of(ball: &Ball) -> Option<Still> {
         let centre = [ball.x.to_bits(), ball.y.to_bits()];
-        let on_centre = |&(x, y): &(f64, f64)| [x.to_bits(), y.to_bits()] == centre;
+        let on_centre = |point: &Vec2| [point.x.to_bits(), point.y.to_bits()] == centre;
         ball.trail.iter().all(on_centre).then_some(Still {
             centre,
             radius: ball.radius.to_bits(),

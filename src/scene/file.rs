@@ -66,7 +66,7 @@ pub fn preset_names() -> Vec<&'static str> {
 /// A canvas size typed on the command line (`--width 1920`), laid over a scene file's own
 /// before its `[spawn]` places balls, so they fill the canvas the run draws.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Canvas {
+pub struct CanvasSize {
     pub width: Option<u32>,
     pub height: Option<u32>,
 }
@@ -74,11 +74,11 @@ pub struct Canvas {
 /// Reads a scene file (`-`: standard input); `seed` drives any random spawning it asks for.
 /// Only a regular file or standard input, and at most [`MAX_SCENE_BYTES`] of it.
 pub fn load(path: &Path, seed: u64) -> Result<Scene, SceneFileError> {
-    load_on(path, seed, Canvas::default())
+    load_on(path, seed, CanvasSize::default())
 }
 
 /// [`load`], with the balls spawned on `canvas` where it gives a size.
-pub fn load_on(path: &Path, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
+pub fn load_on(path: &Path, seed: u64, canvas: CanvasSize) -> Result<Scene, SceneFileError> {
     let stdin = path.as_os_str() == "-";
     let file = if stdin {
         "standard input".to_string()
@@ -127,11 +127,11 @@ pub fn load_on(path: &Path, seed: u64, canvas: Canvas) -> Result<Scene, SceneFil
 
 /// Loads a bundled preset by name.
 pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
-    preset_on(name, seed, Canvas::default())
+    preset_on(name, seed, CanvasSize::default())
 }
 
 /// [`preset`], with the balls spawned on `canvas` where it gives a size.
-pub fn preset_on(name: &str, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
+pub fn preset_on(name: &str, seed: u64, canvas: CanvasSize) -> Result<Scene, SceneFileError> {
     let (_, text) =
         PRESETS
             .iter()
@@ -144,11 +144,16 @@ pub fn preset_on(name: &str, seed: u64, canvas: Canvas) -> Result<Scene, SceneFi
 
 /// Parses and validates scene-file text; `file` names it in errors.
 pub fn parse(file: &str, text: &str, seed: u64) -> Result<Scene, SceneFileError> {
-    parse_on(file, text, seed, Canvas::default())
+    parse_on(file, text, seed, CanvasSize::default())
 }
 
 /// [`parse`], with the balls spawned on `canvas` where it gives a size.
-fn parse_on(file: &str, text: &str, seed: u64, canvas: Canvas) -> Result<Scene, SceneFileError> {
+fn parse_on(
+    file: &str,
+    text: &str,
+    seed: u64,
+    canvas: CanvasSize,
+) -> Result<Scene, SceneFileError> {
     let parse_error = |key: String, error: toml::de::Error| {
         let span = error.span().unwrap_or(0..0);
         let start = span.start.min(text.len());
@@ -254,6 +259,7 @@ struct SceneFile {
     frames: u32,
     #[serde(default = "default_frame_ms")]
     frame_ms: u32,
+    /// `[x, y]` as the file writes it (the scene holds it as a `Vec2`, as it holds floors).
     gravity: Option<[f64; 2]>,
     drag: Option<f64>,
     walls: Option<WallsFile>,
@@ -379,11 +385,28 @@ struct BallFile {
 }
 
 impl FloorFile {
+    /// The floor as the scene holds it.
     fn floor(&self) -> Floor {
         Floor {
             from: Vec2::from(self.from),
             to: Vec2::from(self.to),
             damping: self.damping,
+        }
+    }
+}
+
+impl BallFile {
+    /// The ball as the scene holds it.
+    fn spec(&self) -> BallSpec {
+        BallSpec {
+            x: self.x,
+            y: self.y,
+            vx: self.vx,
+            vy: self.vy,
+            radius: self.radius,
+            colour: self.colour,
+            trail_colour: self.trail_colour,
+            trail: self.trail,
         }
     }
 }
@@ -409,7 +432,7 @@ pub struct Spawn {
 
 impl SceneFile {
     /// The file with `canvas`'s size in place of its own, where `canvas` gives one.
-    fn on(self, canvas: Canvas) -> SceneFile {
+    fn on(self, canvas: CanvasSize) -> SceneFile {
         SceneFile {
             width: canvas.width.unwrap_or(self.width),
             height: canvas.height.unwrap_or(self.height),
@@ -418,54 +441,20 @@ impl SceneFile {
     }
 
     fn into_scene(self, seed: u64) -> Result<Scene, InvalidValue> {
-        let mut balls: Vec<BallSpec> = self
-            .balls
-            .into_iter()
-            .map(|b| BallSpec {
-                x: b.x,
-                y: b.y,
-                vx: b.vx,
-                vy: b.vy,
-                radius: b.radius,
-                colour: b.colour,
-                trail_colour: b.trail_colour,
-                trail: b.trail,
-            })
-            .collect();
-        if let Some(spawn) = self.spawn {
-            if spawn.count > MAX_BALLS {
-                return Err(InvalidValue {
-                    key: "spawn.count".to_string(),
-                    value: spawn.count.to_string(),
-                    allowed: format!("must be at most {MAX_BALLS} balls"),
-                });
-            }
-            let (width, height) = (f64::from(self.width), f64::from(self.height));
-            let floors: Vec<Floor> = self.floors.iter().map(FloorFile::floor).collect();
-            // Balls that collide start apart; balls that pass through each other may start
-            // anywhere (as the `many` preset's always have); both above every floor.
-            let spawned = match self.ball_collisions {
-                Some(_) => spawn.balls(width, height, seed, &floors),
-                None => spawn.overlapping_balls_above(width, height, seed, &floors),
-            };
-            balls.extend(spawned.ok_or_else(|| InvalidValue {
-                key: "spawn.count".to_string(),
-                value: spawn.count.to_string(),
-                allowed: format!(
-                    "there is no room for that many balls of radius {} above the floors",
-                    spawn.radius
-                ),
-            })?);
+        let floors: Vec<Floor> = self.floors.iter().map(FloorFile::floor).collect();
+        let mut balls: Vec<BallSpec> = self.balls.iter().map(BallFile::spec).collect();
+        if let Some(spawn) = &self.spawn {
+            balls.extend(self.spawned(spawn, seed, &floors)?);
         }
         Ok(Scene {
             width: self.width,
             height: self.height,
             background: self.background,
             balls,
-            gravity: self.gravity,
+            gravity: self.gravity.map(Vec2::from),
             drag: self.drag,
             walls: self.walls.map(|w| w.damping),
-            floors: self.floors.iter().map(FloorFile::floor).collect(),
+            floors,
             floor_colour: self.floor_colour,
             ball_collisions: self.ball_collisions.map(|c| c.restitution),
             motion: Motion {
@@ -481,6 +470,36 @@ impl SceneFile {
                 .trail_fade
                 .map_or(Ok(TrailFade::Linear), FadeFile::read)?,
             trail_shrink: self.trail_shrink,
+        })
+    }
+
+    /// The balls `spawn` places in this file's box, above `floors`: apart if they collide,
+    /// anywhere if they pass through each other (as the `many` preset's always have).
+    fn spawned(
+        &self,
+        spawn: &Spawn,
+        seed: u64,
+        floors: &[Floor],
+    ) -> Result<Vec<BallSpec>, InvalidValue> {
+        if spawn.count > MAX_BALLS {
+            return Err(InvalidValue {
+                key: "spawn.count".to_string(),
+                value: spawn.count.to_string(),
+                allowed: format!("must be at most {MAX_BALLS} balls"),
+            });
+        }
+        let (width, height) = (f64::from(self.width), f64::from(self.height));
+        let spawned = match self.ball_collisions {
+            Some(_) => spawn.balls(width, height, seed, floors),
+            None => spawn.overlapping_balls_above(width, height, seed, floors),
+        };
+        spawned.ok_or_else(|| InvalidValue {
+            key: "spawn.count".to_string(),
+            value: spawn.count.to_string(),
+            allowed: format!(
+                "there is no room for that many balls of radius {} above the floors",
+                spawn.radius
+            ),
         })
     }
 }

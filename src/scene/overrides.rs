@@ -57,11 +57,13 @@ mod fit {
 
     /// Downward gravity, px/frame²; 0 removes gravity.
     pub mod downwards {
-        pub fn put(g: f64) -> Option<[f64; 2]> {
-            super::unless_zero(g).map(|g| [0.0, g])
+        use crate::physics::Vec2;
+
+        pub fn put(g: f64) -> Option<Vec2> {
+            super::unless_zero(g).map(|g| Vec2::new(0.0, g))
         }
-        pub fn get(place: &Option<[f64; 2]>) -> Option<f64> {
-            place.map(|[_, g]| g)
+        pub fn get(place: &Option<Vec2>) -> Option<f64> {
+            place.map(|g| g.y)
         }
     }
 }

@@ -39,7 +39,7 @@ pub struct Scene {
     pub background: Rgb,
     pub balls: Vec<BallSpec>,
     /// Acceleration added to every ball's velocity each frame, px/frame² (None: no gravity).
-    pub gravity: Option<[f64; 2]>,
+    pub gravity: Option<Vec2>,
     /// Share of speed lost to the air each frame, 0 to 1 (None: no drag).
     pub drag: Option<f64>,
     /// The box's damping: share of speed each wall bounce keeps, 1 elastic, 0 dead stop
@@ -224,7 +224,7 @@ impl Scene {
     /// The forces and boundaries the scene names.
     pub fn effects(&self) -> Effects {
         Effects {
-            gravity: self.gravity.map(Vec2::from),
+            gravity: self.gravity,
             drag: self.drag,
             walls: self.walls.map(|damping| Walls {
                 width: f64::from(self.width),
@@ -246,34 +246,7 @@ impl Scene {
                 ));
             }
         }
-        if let Some(gravity) = self.gravity {
-            check_finite("gravity", gravity[0])?;
-            check_finite("gravity", gravity[1])?;
-        }
-        if let Some(drag) = self.drag {
-            check_share("drag", drag)?;
-        }
-        if let Some(damping) = self.walls {
-            check_share("walls.damping", damping)?;
-        }
-        if let Some(restitution) = self.ball_collisions {
-            check_share("ball_collisions.restitution", restitution)?;
-        }
-        for (i, floor) in self.floors.iter().enumerate() {
-            let key = |name: &str| format!("floors[{i}].{name}");
-            for (name, Vec2 { x, y }) in [("from", floor.from), ("to", floor.to)] {
-                check_finite(&key(name), x)?;
-                check_finite(&key(name), y)?;
-            }
-            if floor.from == floor.to {
-                return Err(invalid(
-                    &key("to"),
-                    format!("{:?}", floor.to.to_array()),
-                    "must differ from `from`",
-                ));
-            }
-            check_share(&key("damping"), floor.damping)?;
-        }
+        self.validate_effects()?;
         if !(1..=MAX_SUBSTEPS).contains(&self.motion.substeps) {
             return Err(invalid(
                 "substeps",
@@ -308,6 +281,28 @@ impl Scene {
         }
         for (i, ball) in self.balls.iter().enumerate() {
             self.validate_ball(i, ball)?;
+        }
+        Ok(())
+    }
+
+    /// Checks the forces and boundaries: each strength finite or a share, each floor a
+    /// segment of finite, distinct ends.
+    fn validate_effects(&self) -> Result<(), InvalidValue> {
+        if let Some(gravity) = self.gravity {
+            check_finite("gravity", gravity.x)?;
+            check_finite("gravity", gravity.y)?;
+        }
+        if let Some(drag) = self.drag {
+            check_share("drag", drag)?;
+        }
+        if let Some(damping) = self.walls {
+            check_share("walls.damping", damping)?;
+        }
+        if let Some(restitution) = self.ball_collisions {
+            check_share("ball_collisions.restitution", restitution)?;
+        }
+        for (i, floor) in self.floors.iter().enumerate() {
+            validate_floor(i, floor)?;
         }
         Ok(())
     }
@@ -357,4 +352,21 @@ impl Scene {
         }
         Ok(())
     }
+}
+
+/// Checks floor number `i`: finite ends that differ, and a damping that is a share.
+fn validate_floor(i: usize, floor: &Floor) -> Result<(), InvalidValue> {
+    let key = |name: &str| format!("floors[{i}].{name}");
+    for (name, Vec2 { x, y }) in [("from", floor.from), ("to", floor.to)] {
+        check_finite(&key(name), x)?;
+        check_finite(&key(name), y)?;
+    }
+    if floor.from == floor.to {
+        return Err(invalid(
+            &key("to"),
+            format!("{:?}", floor.to.to_array()),
+            "must differ from `from`",
+        ));
+    }
+    check_share(&key("damping"), floor.damping)
 }

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use bouncing_ball::check::animation::lzw_indices;
+use bouncing_ball::physics::Vec2;
 use bouncing_ball::render::{to_rgb, Renderer};
 use bouncing_ball::{BallSpec, Scene};
 use image::RgbImage;
@@ -26,7 +27,7 @@ pub fn lesson_scene() -> Scene {
             trail_colour: [60, 140, 255],
             trail: 20,
         }],
-        gravity: Some([0.0, 0.5]),
+        gravity: Some(Vec2::new(0.0, 0.5)),
         walls: Some(0.88),
         frames: 200,
         frame_ms: 30,

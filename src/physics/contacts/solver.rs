@@ -80,7 +80,7 @@ use crate::physics::tolerances::{
 };
 use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
-use crate::physics::work::{tally, Work};
+use crate::work::{tally, Work};
 
 /// The golden angle, radians: successive multiples of it spread evenly round a circle.
 const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;

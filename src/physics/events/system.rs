@@ -53,7 +53,7 @@ use crate::physics::tolerances::{
     BALL_TOUCH_GAP, MAX_EVENTS_PER_BALL, REST_SPEED, SLEEP_GAP, TC_DURATION, TOUCH_SPEED,
 };
 use crate::physics::vec2::Vec2;
-use crate::physics::work::{tally, Work};
+use crate::work::{tally, Work};
 
 /// What the event-driven steps of the last frame did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

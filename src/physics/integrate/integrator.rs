@@ -15,7 +15,7 @@ use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
 use crate::physics::maths;
 use crate::physics::vec2::Vec2;
-use crate::physics::work::{tally, Work};
+use crate::work::{tally, Work};
 
 /// What the integrators move: a centre and a velocity. A [`Ball`] is one; the contact solver
 /// moves a compact copy of its balls, without their trails (`Body` in `crate::physics::contacts`).
@@ -95,7 +95,7 @@ impl Forces {
         }
     }
 
-    /// Counts this step's gravity and drag work (with the `work-tally` feature; see `super::work`).
+    /// Counts this step's gravity and drag work (with the `work-tally` feature; see `crate::work`).
     fn tally(&self) {
         if self.gravity.is_some() {
             tally(Work::Gravity);

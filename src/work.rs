@@ -1,7 +1,8 @@
-//! A tally of the work each effect does, kept only with the `work-tally` feature (the tests
-//! turn it on), so a test can prove that an effect a scene does not call for never runs.
-//! Without it every `tally` compiles to nothing. Drawing and the GIF's comparison count their
-//! pixels here too, so a test can prove that a frame that did not change costs nothing.
+//! A tally of the work each stage does, kept only with the `work-tally` feature (the tests
+//! turn it on), so a test can prove that work a scene does not call for never runs: physics
+//! counts each effect it applies, drawing and the GIF's comparison count their pixels (a
+//! frame that did not change costs nothing). Without the feature every `tally` compiles to
+//! nothing. It imports nothing, so every stage may count here without knowing the others.
 
 /// A piece of per-frame work that only some scenes call for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
