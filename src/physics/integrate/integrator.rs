@@ -46,7 +46,8 @@ pub enum Integrator {
 
 /// Gravity and drag for steps of length `dt`, worked out once per frame, not once per step.
 /// Drag costs one logarithm per ball-frame (and one power with substeps); no drag costs nothing.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The default is no force over no time, for a solver before its first frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Forces {
     /// Step length, frames.
     pub dt: f64,
