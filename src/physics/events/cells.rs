@@ -16,6 +16,7 @@ use std::ops::Range;
 
 use super::lists::Lists;
 use crate::physics::ball::Ball;
+use crate::physics::contacts::grid::cell_size;
 use crate::physics::integrate::poly::Poly;
 use crate::physics::tolerances::MAX_CELLS_PER_BALL;
 use crate::physics::vec2::Vec2;
@@ -63,12 +64,13 @@ impl Cells {
             largest = largest.max(ball.radius);
         }
         let (width, height) = (right - left, bottom - top);
-        let most = MAX_CELLS_PER_BALL * balls.len().max(1) as f64;
         self.margin = 1e-6 * 2.0 * largest;
-        self.size = (2.0 * largest + 4.0 * self.margin)
-            .max((width * height / most).sqrt())
-            .max(width.max(height) / most)
-            .max(f64::MIN_POSITIVE);
+        self.size = cell_size(
+            2.0 * largest + 4.0 * self.margin,
+            width,
+            height,
+            balls.len(),
+        );
         // `as usize` saturates and maps NaN to 0, so no position can make an index out of range.
         self.columns = (width / self.size) as usize + 1;
         self.rows = (height / self.size) as usize + 1;
