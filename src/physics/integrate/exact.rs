@@ -30,7 +30,9 @@ use super::toi;
 use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
 use crate::physics::floor::Floor;
-use crate::physics::tolerances::{FLOOR_TOUCH_GAP, MAX_EVENTS_PER_STEP, REST_SPEED, TOUCH_SPEED};
+use crate::physics::tolerances::{
+    FLOOR_TOUCH_GAP, MAX_EVENTS_PER_STEP, MAX_SUPPORTS, REST_SPEED, TOUCH_SPEED,
+};
 use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
 
@@ -172,17 +174,15 @@ fn bounce_along(ball: &mut Ball, n: Vec2, damping: f64, forces: &Forces) {
 /// them.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Support {
-    normals: [Vec2; Support::MAX],
+    normals: [Vec2; MAX_SUPPORTS],
     len: usize,
 }
 
 impl Support {
-    /// More surfaces than this at once hold a ball completely anyway.
-    const MAX: usize = 8;
-
-    /// Adds a surface the ball rests on (beyond `MAX`, the ball is held completely).
+    /// Adds a surface the ball rests on (beyond [`MAX_SUPPORTS`], the ball is held
+    /// completely).
     pub fn push(&mut self, n: Vec2) {
-        if self.len < Self::MAX {
+        if self.len < MAX_SUPPORTS {
             self.normals[self.len] = n;
         }
         self.len += 1;
@@ -195,7 +195,7 @@ impl Support {
     /// normals less than half a turn apart (a wall beside the ball counts: it stops a slide
     /// towards it, and so does a ball above it on the side it would slide to).
     pub fn hold_completely(&self, g: Vec2) -> bool {
-        if self.len > Self::MAX {
+        if self.len > MAX_SUPPORTS {
             return true;
         }
         let up = -g;
@@ -223,7 +223,7 @@ impl Support {
         let Some(gravity) = held.gravity.as_mut() else {
             return held;
         };
-        if self.len > Self::MAX {
+        if self.len > MAX_SUPPORTS {
             *gravity = Vec2::ZERO;
             return held;
         }
