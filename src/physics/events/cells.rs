@@ -9,8 +9,9 @@
 //!
 //! A ball changes cell only once it is a hair ([`CELL_MARGIN`] of the largest diameter) past
 //! the border, and the cells are widened by twice that, so rounding can neither make a ball
-//! hop back and forth across a border nor let two touching balls sit two cells apart. The outermost cells reach to
-//! infinity, so a ball that leaves the area the grid was laid over still has a cell.
+//! hop back and forth across a border nor let two touching balls sit two cells apart. The
+//! outermost cells reach to infinity, so a ball that leaves the area the grid was laid over
+//! still has a cell.
 
 use std::ops::Range;
 
@@ -23,7 +24,7 @@ use crate::physics::vec2::Vec2;
 
 /// Balls in cells, rebuilt at the start of every step into the same buffers.
 #[derive(Clone, Debug, Default)]
-pub struct Cells {
+pub(super) struct Cells {
     left: f64,
     top: f64,
     size: f64,

@@ -42,7 +42,7 @@
 //!   dropped time is taken back). [`EventCounts`] reports each such step.
 
 use super::cells::Cells;
-use super::queue::{Event, Queue, What, NOTHING};
+use super::queue::{Event, EventKind, Queue, NOTHING};
 use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
 use crate::physics::integrate::exact::{self, Bounds, Contact, Support};
@@ -72,7 +72,7 @@ pub struct EventCounts {
 
 /// Exact ball-ball contacts, keeping its buffers from step to step.
 #[derive(Clone, Debug)]
-pub struct EventDriven {
+pub(crate) struct EventDriven {
     /// Share of the approach speed kept after a bounce (0 to 1).
     restitution: f64,
     queue: Queue,
@@ -234,18 +234,18 @@ impl EventDriven {
             }
             events += 1;
             self.fly(&mut balls[i], i, now, step);
-            self.resolve(balls, i, event.what, now, step);
+            self.resolve(balls, i, event.kind, now, step);
         }
         (events, step.forces.dt)
     }
 
-    /// Resolves ball `i`'s event `what`, now (ball `i` is flown there), and predicts again
-    /// the events of the balls it changed.
-    fn resolve(&mut self, balls: &mut [Ball], i: usize, what: What, now: f64, step: &Step) {
+    /// Resolves ball `i`'s event of kind `kind`, now (ball `i` is flown there), and predicts
+    /// again the events of the balls it changed.
+    fn resolve(&mut self, balls: &mut [Ball], i: usize, kind: EventKind, now: f64, step: &Step) {
         let forces = step.forces;
-        match what {
-            What::Nothing => {}
-            What::Ball(j) => {
+        match kind {
+            EventKind::Nothing => {}
+            EventKind::Ball(j) => {
                 let j = j as usize;
                 self.fly(&mut balls[j], j, now, step);
                 self.collide(balls, i, j, forces, now);
@@ -255,7 +255,7 @@ impl EventDriven {
                 self.predict(balls, i, step);
                 self.predict(balls, j, step);
             }
-            What::Contact => {
+            EventKind::Contact => {
                 if let Some(contact) = self.contact[i] {
                     contact.bounce(&mut balls[i], forces);
                     self.counts.contacts += 1;
@@ -266,7 +266,7 @@ impl EventDriven {
                 self.queue.changed(i);
                 self.predict(balls, i, step);
             }
-            What::Cell { axis, towards } => {
+            EventKind::Cell { axis, towards } => {
                 // The ball keeps its course, so events other balls predicted with it stand,
                 // and so does its own bounce unless its partner changed course since: then
                 // only the balls of the cells it now comes near need looking at.
@@ -487,7 +487,7 @@ impl EventDriven {
             Some((axis, towards)) => self.cells.entered(i, axis, towards, visit),
         }
         if let (time, Some(j)) = first {
-            self.bounce[i] = self.queue.event(now + time, What::Ball(j as u32));
+            self.bounce[i] = self.queue.event(now + time, EventKind::Ball(j as u32));
         }
         self.schedule(balls, i, &path, step);
     }
@@ -498,24 +498,24 @@ impl EventDriven {
         let now = self.clock[i];
         let bounce = self.bounce[i];
         // The earliest so far, as time from now; later candidates are not looked for.
-        let mut first = (bounce.time.min(step.horizon) - now, bounce.what);
+        let mut first = (bounce.time.min(step.horizon) - now, bounce.kind);
         if let Some((time, axis, towards)) = self.cells.exit(i, path, first.0) {
-            first = (time, What::Cell { axis, towards });
+            first = (time, EventKind::Cell { axis, towards });
         }
         // Walls and floors last: with the horizon cut short, far ones are skipped unsolved.
         let ball = &balls[i];
         let bounds = Bounds::of(ball, step.effects);
         self.contact[i] = bounds
             .first_contact(ball, path, first.0)
-            .filter(|&(time, _)| time < first.0 || first.1 == What::Nothing)
+            .filter(|&(time, _)| time < first.0 || first.1 == EventKind::Nothing)
             .map(|(time, contact)| {
-                first = (time, What::Contact);
+                first = (time, EventKind::Contact);
                 contact
             });
         let next = match first {
-            (_, What::Ball(_)) => bounce,
-            (_, What::Nothing) => NOTHING,
-            (time, what) => self.queue.event(now + time, what),
+            (_, EventKind::Ball(_)) => bounce,
+            (_, EventKind::Nothing) => NOTHING,
+            (time, kind) => self.queue.event(now + time, kind),
         };
         self.queue.set(i, next);
     }
