@@ -564,12 +564,9 @@ impl EventDriven {
     /// Bounces balls `i` and `j`, which touch now, along the line through their centres.
     ///
     /// Both get the same impulse in opposite directions, so momentum is kept; the relative
-    /// normal speed `u < 0` becomes `−e·u`, so with `e ≤ 1` kinetic energy never rises.
-    ///
-    /// The rest rule: with `e < 1`, a ball that gravity presses onto a held ball, and whose
-    /// rebound would be slower than `REST_SPEED`, comes to rest on it as on a wall: it loses
-    /// its normal speed relative to the held ball, which is part of what holds it and is not
-    /// pushed (the floor below takes the impulse, as a wall does).
+    /// normal speed `u < 0` becomes `−e·u`, so with `e ≤ 1` kinetic energy never rises. The
+    /// TC model chooses `e`; a sleeping ball struck hard wakes; and with `e < 1` a rebound
+    /// slower than `REST_SPEED` may end in rest instead (the rest rule).
     fn collide(&mut self, balls: &mut [Ball], i: usize, j: usize, forces: &Forces, now: f64) {
         let (a, b) = (&balls[i], &balls[j]);
         let offset = b.position() - a.position();
@@ -582,52 +579,86 @@ impl EventDriven {
         if approach >= 0.0 {
             return;
         }
+        let e = self.restitution_now([i, j], now);
+        let rebound = -e * approach;
+        self.wake_if_struck_hard([i, j], rebound, forces);
+        if e < 1.0 && rebound < REST_SPEED && self.come_to_rest(balls, [i, j], n, forces) {
+            return;
+        }
+        self.exchange_impulse(balls, [i, j], n, (1.0 + e) * approach);
+    }
+
+    /// The restitution of a collision of balls `i` and `j` now, by the TC model: elastic
+    /// within [`TC_DURATION`] of either ball's previous collision, the scene's otherwise.
+    /// Notes the time of this one for both.
+    fn restitution_now(&mut self, [i, j]: [usize; 2], now: f64) -> f64 {
         let time = self.elapsed + now;
         let recent = [i, j].map(|k| time - self.last_collision[k] < TC_DURATION);
         self.last_collision[i] = time;
         self.last_collision[j] = time;
-        let e = if recent[0] || recent[1] {
+        if recent[0] || recent[1] {
             1.0
         } else {
             self.restitution
-        };
-        // A sleeping ball struck hard enough to rebound at the rest speed wakes (and falls
-        // again); struck softer it stays put, as a wall would.
-        for k in [i, j] {
-            if self.asleep[k] && -e * approach >= REST_SPEED {
+        }
+    }
+
+    /// Wakes each sleeping ball of the pair struck hard enough to rebound at the rest speed,
+    /// `rebound` px/frame or more (and it falls again); struck softer it stays put, as a wall
+    /// would.
+    fn wake_if_struck_hard(&mut self, pair: [usize; 2], rebound: f64, forces: &Forces) {
+        for k in pair {
+            if self.asleep[k] && rebound >= REST_SPEED {
                 self.asleep[k] = false;
                 self.held[k] = false;
                 self.flight[k] = *forces;
             }
         }
-        if e < 1.0 && -e * approach < REST_SPEED {
-            let resting = if self.held[i] && exact::pressed(forces, n) {
-                Some((i, j, n))
-            } else if self.held[j] && exact::pressed(forces, -n) {
-                Some((j, i, -n))
-            } else {
-                None
-            };
-            if let Some((holder, resting, n)) = resting {
-                let holder = balls[holder].velocity();
-                let ball = &mut balls[resting];
-                let into = (ball.velocity() - holder).dot(n);
-                let velocity = ball.velocity() - into * n;
-                (ball.vx, ball.vy) = (velocity.x, velocity.y);
-                // From now on gravity no longer presses it into the held ball, as on a wall:
-                // on a curved flight (Verlet's, RK4's) it would press in again at once.
-                if !self.asleep[resting] {
-                    self.support[resting].push(n);
-                    self.flight[resting] = self.support[resting].hold(forces);
-                }
-                self.held[i] = true;
-                self.held[j] = true;
-                return;
-            }
+    }
+
+    /// The rest rule: a ball of the pair that gravity presses onto the other, a held ball,
+    /// comes to rest on it as on a wall: it loses its normal speed relative to the held ball,
+    /// which is part of what holds it and is not pushed (the floor below takes the impulse, as
+    /// a wall does). `n` is the normal from `i` to `j`. Returns whether one came to rest.
+    fn come_to_rest(
+        &mut self,
+        balls: &mut [Ball],
+        [i, j]: [usize; 2],
+        n: Vec2,
+        forces: &Forces,
+    ) -> bool {
+        let resting = if self.held[i] && exact::pressed(forces, n) {
+            Some((i, j, n))
+        } else if self.held[j] && exact::pressed(forces, -n) {
+            Some((j, i, -n))
+        } else {
+            None
+        };
+        let Some((holder, resting, n)) = resting else {
+            return false;
+        };
+        let holder = balls[holder].velocity();
+        let ball = &mut balls[resting];
+        let into = (ball.velocity() - holder).dot(n);
+        let velocity = ball.velocity() - into * n;
+        (ball.vx, ball.vy) = (velocity.x, velocity.y);
+        // From now on gravity no longer presses it into the held ball, as on a wall: on a
+        // curved flight (Verlet's, RK4's) it would press in again at once.
+        if !self.asleep[resting] {
+            self.support[resting].push(n);
+            self.flight[resting] = self.support[resting].hold(forces);
         }
-        let (mass_a, mass_b) = (mass(a.radius), mass(b.radius));
+        self.held[i] = true;
+        self.held[j] = true;
+        true
+    }
+
+    /// Gives balls `i` and `j` opposite impulses along `n` (from `i` to `j`) that change
+    /// their relative normal speed by `change`, shared by mass; a sleeping ball is not moved,
+    /// and the other takes all of it.
+    fn exchange_impulse(&self, balls: &mut [Ball], [i, j]: [usize; 2], n: Vec2, change: f64) {
+        let (mass_a, mass_b) = (mass(balls[i].radius), mass(balls[j].radius));
         let total = mass_a + mass_b;
-        let change = (1.0 + e) * approach;
         let (kick_a, kick_b) = match (self.asleep[i], self.asleep[j]) {
             (true, _) => (0.0, change),
             (_, true) => (change, 0.0),
