@@ -45,7 +45,7 @@ use super::cells::Cells;
 use super::queue::{Event, EventKind, Queue, NOTHING};
 use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
-use crate::physics::integrate::exact::{self, Bounds, Contact, Support};
+use crate::physics::integrate::exact::{self, BallBounds, Contact, Support};
 use crate::physics::integrate::integrator::{Forces, Integrator};
 use crate::physics::integrate::poly::Poly;
 use crate::physics::integrate::toi;
@@ -260,7 +260,7 @@ impl EventDriven {
                     contact.bounce(&mut balls[i], forces);
                     self.counts.contacts += 1;
                 }
-                let bounds = Bounds::of(&balls[i], step.effects);
+                let bounds = BallBounds::of(&balls[i], step.effects);
                 self.flight[i] = bounds.supported(&balls[i], forces);
                 self.held[i] = self.flight[i] != *forces;
                 self.queue.changed(i);
@@ -336,7 +336,7 @@ impl EventDriven {
         self.support.extend(
             balls
                 .iter()
-                .map(|ball| Bounds::of(ball, step.effects).support(ball)),
+                .map(|ball| BallBounds::of(ball, step.effects).support(ball)),
         );
         self.held.clear();
         self.held.resize(balls.len(), false);
@@ -399,7 +399,7 @@ impl EventDriven {
                     continue;
                 }
                 let ball = &balls[i];
-                let mut support = Bounds::of(ball, step.effects).near(ball, SLEEP_GAP);
+                let mut support = BallBounds::of(ball, step.effects).near(ball, SLEEP_GAP);
                 let asleep = &self.asleep;
                 self.cells.neighbours(i, |j| {
                     if j != i && asleep[j] {
@@ -504,7 +504,7 @@ impl EventDriven {
         }
         // Walls and floors last: with the horizon cut short, far ones are skipped unsolved.
         let ball = &balls[i];
-        let bounds = Bounds::of(ball, step.effects);
+        let bounds = BallBounds::of(ball, step.effects);
         self.contact[i] = bounds
             .first_contact(ball, path, first.0)
             .filter(|&(time, _)| time < first.0 || first.1 == EventKind::Nothing)

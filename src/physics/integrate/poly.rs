@@ -19,7 +19,7 @@ const MAX_DEGREE: usize = 8;
 
 /// `c[0] + c[1]·t + c[2]·t² + …`
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Poly {
+pub(crate) struct Poly {
     c: [f64; MAX_DEGREE + 1],
     /// Index of the highest non-zero coefficient (0 for a constant).
     degree: usize,
