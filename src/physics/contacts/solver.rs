@@ -25,7 +25,7 @@
 //!    - **Warm start** (under gravity only): each contact pushes again with its impulse of
 //!      the sub-step before.
 //!    - **Solve**, the velocity pass. Under gravity it runs three times
-//!      ([`LOADED_VELOCITY_PASSES`](crate::physics::tolerances::LOADED_VELOCITY_PASSES)), so that a deep heap carries its weight before the
+//!      (`LOADED_VELOCITY_PASSES`), so that a deep heap carries its weight before the
 //!      position pass moves it; without, once.
 //!    - **Integrate positions**: fly `h` with the solved velocities.
 //!    - **Relax**, the position pass: overlap beyond a small slop partly pushed out.
