@@ -22,7 +22,7 @@ use crate::job::{Job, RunError};
 /// How closely two runs of the reference (RK4, exact collisions) with the second's substeps
 /// doubled must agree, px, at every ball in every frame, for the finer to be the reference: far
 /// below a pixel, and a thousand times below the error of the best method worth comparing.
-const REFERENCE_AGREEMENT: f64 = 1e-9;
+pub const REFERENCE_AGREEMENT: f64 = 1e-9;
 
 /// The most ball-steps one run of the reference may take, weighted by what a step costs
 /// (a ball-ball collision step counts as [`COLLIDING_STEP_WEIGHT`]): a second or two for one

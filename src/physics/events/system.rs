@@ -34,7 +34,7 @@
 //!   event, it has left every ball as it found it (stopped, where it was), so every later
 //!   step would do the same: none is taken, and a settled scene costs nothing.
 //! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
-//!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
+//!   hard-sphere gas with the TC model", 1998): a collision within `TC_DURATION` of either
 //!   ball's previous collision is elastic, so a cascade of collisions at one moment ends.
 //! - **A cap.** A step resolves at most [`MAX_EVENTS_PER_BALL`] events per ball. If it runs
 //!   out, every ball is flown to the time of the last event and the rest of the step is

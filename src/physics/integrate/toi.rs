@@ -12,7 +12,7 @@
 //!
 //! Rounding can leave two touching things a hair inside each other. The stable rule is: a pair
 //! that overlaps and approaches collides now; a pair that overlaps and parts is left alone; a
-//! pair whose approach is slower than [`TOUCH_SPEED`] is not approaching (it is resting or
+//! pair whose approach is slower than `TOUCH_SPEED` is not approaching (it is resting or
 //! sliding against the other), so rounding can never make it collide again and again.
 
 use super::poly::Poly;
