@@ -9,7 +9,6 @@ use bouncing_ball::render::tile::{GAP, LABEL_STRIP};
 use common::{decode_gif, run_in};
 use image::RgbImage;
 
-
 fn succeeds(dir: &Path, args: &[&str]) {
     let output = run_in(dir, args);
     assert!(

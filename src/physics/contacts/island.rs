@@ -13,7 +13,7 @@ use super::contact::{Contacts, FixedContact, PairContact};
 use crate::physics::vec2::Vec2;
 
 /// `island_of` for a ball without contacts.
-pub(super) const NO_ISLAND: usize = usize::MAX;
+const NO_ISLAND: usize = usize::MAX;
 
 /// `island_of` for a ball that sleeps (it has no contacts either, and does not move).
 const ASLEEP: usize = usize::MAX - 1;
