@@ -11,7 +11,7 @@
 //! this over more passes per step, softer contacts, and plain substeps. The stages carry
 //! Box2D v3's names, and every stage is handed the step's one [`StepContext`].
 //!
-//! One step ([`ContactSolver::step`]):
+//! One step (`ContactSolver::one_step`; a frame is `steps` of them):
 //!
 //! 1. **Prepare** (`super::contact_solver`): the contacts that can touch within the step,
 //!    each with the impulse it ended the last step with, sorted into islands
@@ -66,14 +66,19 @@ pub(crate) struct ContactSolver {
 
 /// The stages of a sub-step, in the order they run, named as Box2D v3 names them
 /// (`b2SolverStageType` in `solver.c`). Box2D's enum also has the stages that run once a
-/// step: here prepare, restitution and store are the calls of [`ContactSolver::step`]
+/// step: here prepare, restitution and store are the calls of `ContactSolver::one_step`
 /// around the sub-steps.
 #[derive(Clone, Copy, Debug)]
 enum Stage {
+    /// The sub-step's gravity and drag into every velocity ([`integrate_velocities`]).
     IntegrateVelocities,
+    /// Each contact pushes again with its last impulse (`contact_solver::warm_start`).
     WarmStart,
+    /// The velocity pass, [`Stepping::velocity_passes`] times (`contact_solver::solve`).
     Solve,
+    /// Every ball flies the sub-step with its solved velocity ([`integrate_positions`]).
     IntegratePositions,
+    /// The position pass (`contact_solver::relax`).
     Relax,
 }
 
