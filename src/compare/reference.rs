@@ -9,7 +9,6 @@
 //! where they first part by more than a ball's radius is its horizon, past which it no longer
 //! says where the balls are, and no method is judged against it.
 
-use crate::physics::tolerances::REFERENCE_AGREEMENT;
 use crate::physics::{Ball, CollisionMode, Integrator, Vec2};
 use crate::scene::spec::MAX_SUBSTEPS;
 use crate::scene::Scene;
@@ -19,6 +18,11 @@ use super::measure::{Role, Trust};
 use super::methods::Method;
 use super::table::short;
 use crate::job::{Job, RunError};
+
+/// How closely two runs of the reference (RK4, exact collisions) with the second's substeps
+/// doubled must agree, px, at every ball in every frame, for the finer to be the reference: far
+/// below a pixel, and a thousand times below the error of the best method worth comparing.
+pub const REFERENCE_AGREEMENT: f64 = 1e-9;
 
 /// The most ball-steps one run of the reference may take, weighted by what a step costs
 /// (a ball-ball collision step counts as [`COLLIDING_STEP_WEIGHT`]): a second or two for one

@@ -33,7 +33,7 @@ enum Stepper {
     Lesson { gravity: f64, walls: Walls },
     /// Each ball on its own, by `Motion::step`: any integrator, substeps, drag, floors, exact
     /// bounces off walls and floors.
-    Apart,
+    IndependentBalls,
     /// Ball-ball collisions in clamp mode: the contact solver moves the balls and solves every
     /// contact (it owns the grid).
     Contacts(ContactSolver),
@@ -62,7 +62,7 @@ impl Stepper {
             {
                 Stepper::Lesson { gravity, walls }
             }
-            _ => Stepper::Apart,
+            _ => Stepper::IndependentBalls,
         }
     }
 }
@@ -97,7 +97,7 @@ impl Simulation {
                 self.tally_lesson_steps();
                 return; // `Ball::step` records the trail
             }
-            Stepper::Apart => {
+            Stepper::IndependentBalls => {
                 let (steps, forces) = self.motion.plan(&self.effects);
                 for _ in 0..steps {
                     for ball in &mut self.balls {
@@ -172,7 +172,7 @@ impl Simulation {
         match &self.stepper {
             Stepper::Contacts(contacts) => contacts.sleeping(),
             Stepper::Events(events) => events.sleeping(),
-            Stepper::Lesson { .. } | Stepper::Apart => 0,
+            Stepper::Lesson { .. } | Stepper::IndependentBalls => 0,
         }
     }
 

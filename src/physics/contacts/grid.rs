@@ -52,7 +52,7 @@ pub struct Grid {
 impl Grid {
     /// The grid's memory per ball, bytes: a 32-byte entry, its cell and up to 12 cell bounds
     /// (the budget counts it before the run; `crate::budget`).
-    pub const BYTES_PER_BALL: u64 = 32 + 8 + 12 * 8;
+    pub(crate) const BYTES_PER_BALL: u64 = 32 + 8 + 12 * 8;
 
     /// An empty grid; it allocates on the first `rebuild` and reuses its buffers afterwards.
     pub fn new() -> Grid {
@@ -69,7 +69,7 @@ impl Grid {
     /// Like `rebuild`, with each ball grown by `margin(ball)` px, so that the pairs found also
     /// include those that are that close (the contact solver looks at pairs that can touch
     /// within a step).
-    pub fn rebuild_with_margins(&mut self, balls: &[Ball], margin: impl Fn(&Ball) -> f64) {
+    pub(crate) fn rebuild_with_margins(&mut self, balls: &[Ball], margin: impl Fn(&Ball) -> f64) {
         let Some(first) = balls.first() else {
             self.entries.clear();
             self.indices.clear();
@@ -78,6 +78,26 @@ impl Grid {
             self.rows = 0;
             return;
         };
+        let ([left, top, right, bottom], largest_radius) = self.read(balls, first, margin);
+        let (width, height) = (right - left, bottom - top);
+        // At least one diameter, so overlapping balls are at most one cell apart.
+        let cell = cell_size(2.0 * largest_radius, width, height, balls.len());
+        // `as usize` saturates and maps NaN to 0, so no position can make an index out of range.
+        self.columns = (width / cell) as usize + 1;
+        self.rows = (height / cell) as usize + 1;
+        self.count_per_cell(left, top, cell);
+        self.place_by_cell();
+    }
+
+    /// Reads `balls` (the first is `first`) into compact entries, each grown by
+    /// `margin(ball)`, and returns the box around their centres (left, top, right, bottom)
+    /// and the largest grown radius.
+    fn read(
+        &mut self,
+        balls: &[Ball],
+        first: &Ball,
+        margin: impl Fn(&Ball) -> f64,
+    ) -> ([f64; 4], f64) {
         let (mut left, mut top, mut right, mut bottom) = (first.x, first.y, first.x, first.y);
         let mut largest_radius = 0.0_f64;
         self.unsorted.clear();
@@ -91,23 +111,15 @@ impl Grid {
             let (x, y) = (ball.x, ball.y);
             self.unsorted.push(Entry { x, y, radius });
         }
-        let (width, height) = (right - left, bottom - top);
+        ([left, top, right, bottom], largest_radius)
+    }
 
-        // At least one diameter, so overlapping balls are at most one cell apart; wider when
-        // the balls are spread thin, so there are never more than a few cells per ball.
-        let max_cells = MAX_CELLS_PER_BALL * balls.len() as f64;
-        let cell = (2.0 * largest_radius)
-            .max((width * height / max_cells).sqrt())
-            .max(width.max(height) / max_cells)
-            .max(f64::MIN_POSITIVE);
-        // `as usize` saturates and maps NaN to 0, so no position can make an index out of range.
-        self.columns = (width / cell) as usize + 1;
-        self.rows = (height / cell) as usize + 1;
+    /// The counting sort's first half: each entry's cell (cells `cell` px wide from `left`,
+    /// `top`), the balls in each cell counted, and the counts turned into a running total,
+    /// so `cell_start[c]` holds where cell `c` ends.
+    fn count_per_cell(&mut self, left: f64, top: f64, cell: f64) {
         let last_column = self.columns - 1;
         let last_row = self.rows - 1;
-
-        // Counting sort. First count the balls in each cell, then turn the counts into a
-        // running total, so `cell_start[c]` holds where cell `c` ends.
         self.cell_start.clear();
         self.cell_start.resize(self.columns * self.rows + 1, 0);
         self.cell_of.clear();
@@ -125,11 +137,16 @@ impl Grid {
             total += *end;
             *end = total;
         }
-        // Then place the balls last to first, each just before its cell's end: within a cell
-        // they keep the caller's order, and `cell_start[c]` ends up where cell `c` starts.
+    }
+
+    /// The counting sort's second half: the balls placed last to first, each just before its
+    /// cell's end. Within a cell they keep the caller's order, and `cell_start[c]` ends up
+    /// where cell `c` starts.
+    fn place_by_cell(&mut self) {
+        let count = self.unsorted.len();
         self.entries.clear();
-        self.entries.resize(balls.len(), Entry::default());
-        self.indices.resize(balls.len(), 0);
+        self.entries.resize(count, Entry::default());
+        self.indices.resize(count, 0);
         let unsorted = self.unsorted.iter().zip(&self.cell_of).enumerate();
         for (index, (entry, &cell)) in unsorted.rev() {
             let slot = &mut self.cell_start[cell];
@@ -140,10 +157,10 @@ impl Grid {
     }
 
     /// Replaces the contents of `places` with the pairs of balls that overlap, named as in
-    /// [`Grid::for_each_overlapping_place`], at most `limit` of them: balls piled on one spot
+    /// `Grid::for_each_overlapping_place`, at most `limit` of them: balls piled on one spot
     /// make N² pairs, and memory must not follow. Places are 32-bit (a scene holds at most
     /// `MAX_BALLS`, a million): half the memory to write and read back for 100,000 balls.
-    pub fn overlapping_places(&self, places: &mut Vec<[u32; 2]>, limit: usize) {
+    pub(crate) fn overlapping_places(&self, places: &mut Vec<[u32; 2]>, limit: usize) {
         // Every candidate is written at `found`, which moves on only past those that overlap:
         // no branch on the test, which a gas passes at random (about one in fifteen), so the
         // processor has nothing to mispredict.
@@ -187,10 +204,10 @@ impl Grid {
         deepest
     }
 
-    /// The same pairs in the same order, each ball named by its place in [`Grid::order`]
+    /// The same pairs in the same order, each ball named by its place in `Grid::order`
     /// (`k < l`) rather than by its index: a caller that keeps its balls in that order finds
     /// both balls of a pair near each other, without looking them up.
-    pub fn for_each_overlapping_place(&self, mut found: impl FnMut(usize, usize)) {
+    fn for_each_overlapping_place(&self, mut found: impl FnMut(usize, usize)) {
         self.for_each_neighbourhood(|a, others| {
             let entry = self.entries[a];
             for (b, other) in others.clone().zip(&self.entries[others]) {
@@ -232,7 +249,7 @@ impl Grid {
 
     /// The balls' indices in cell order (row by row), as of the last `rebuild`: balls near
     /// each other in space are mostly near each other in this order.
-    pub fn order(&self) -> &[usize] {
+    pub(crate) fn order(&self) -> &[usize] {
         &self.indices
     }
 
@@ -241,4 +258,17 @@ impl Grid {
         let start = row * self.columns;
         self.cell_start[start + first]..self.cell_start[start + last + 1]
     }
+}
+
+/// The side of a grid's square cells, px, for `balls` balls whose centres span `width` by
+/// `height` px: at least `smallest` (a diameter, so that balls that can touch are at most one
+/// cell apart), and wider when the balls are spread thin, so that there are never more than
+/// [`MAX_CELLS_PER_BALL`] cells per ball. This grid and exact mode's
+/// (`crate::physics::events`) both size their cells with it.
+pub(crate) fn cell_size(smallest: f64, width: f64, height: f64, balls: usize) -> f64 {
+    let most = MAX_CELLS_PER_BALL * balls.max(1) as f64;
+    smallest
+        .max((width * height / most).sqrt())
+        .max(width.max(height) / most)
+        .max(f64::MIN_POSITIVE)
 }

@@ -6,17 +6,30 @@
 //! together or the pile sinks and buzzes. A scene needs this stage when it has
 //! `ball_collisions` and the default `--collisions clamp`; without them it is never built.
 //!
+//! This stage owns the grid, the contact solver and its sleeping islands; the solver is laid
+//! out as Box2D v3 lays out its own:
+//!
 //! - [`grid`]: a uniform grid rebuilt every step, so finding the pairs that can touch costs
 //!   O(N), not O(N²).
-//! - [`solver`]: Box2D's sequential impulses for discs, iterated in sub-steps, island by
-//!   island. Its own doc lists the stages, named as Box2D v3 names them: prepare, warm start,
-//!   solve, relax, restitution, store.
-//! - [`sleep`]: islands that have come to rest sleep, and cost nothing, until an awake ball
-//!   can touch them.
+//! - `solver` (Box2D's `solver.c`): the step, its stages in order and the sub-step loop:
+//!   Box2D's sequential impulses for discs, iterated in sub-steps, island by island.
+//! - `step_context` (`b2StepContext`): what every stage of a step is handed.
+//! - `contact_solver` (`contact_solver.c`): the stages that sweep over the contacts, named as
+//!   Box2D v3 names them: prepare, warm start, solve, relax, restitution, store.
+//! - `contact`: the contacts themselves and what one contact does in each stage.
+//! - `island` (`island.c`): the balls joined by contacts, each island solved on its own.
+//! - `touch_by_touch`: islands without forces, solved at the moment each contact touches.
+//! - `sleep` (`solver_set.c`): islands that have come to rest sleep, and cost nothing, until
+//!   an awake ball can touch them.
 
+mod contact;
+mod contact_solver;
 pub mod grid;
-pub mod sleep;
-pub mod solver;
+mod island;
+mod sleep;
+mod solver;
+mod step_context;
+mod touch_by_touch;
 
 pub use grid::Grid;
-pub use solver::ContactSolver;
+pub(crate) use solver::ContactSolver;

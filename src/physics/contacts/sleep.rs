@@ -6,7 +6,7 @@
 //! - **Falling asleep.** After each step, a ball slower than the sleep speed
 //!   ([`SLEEP_SPEED`](crate::physics::tolerances::SLEEP_SPEED), scaled with gravity) counts one
 //!   more calm step; faster, its count starts again at 0. An island of the step (balls joined
-//!   by contacts, see `super::solver`) whose every ball has been calm for
+//!   by contacts, see `super::island`) whose every ball has been calm for
 //!   [`SLEEP_FRAMES`](crate::physics::tolerances::SLEEP_FRAMES) frames sleeps whole: its balls
 //!   stop (their velocities set to 0, as Box2D v2.4 and rapier do, so that a sleeping ball's state is
 //!   exactly what it keeps) and stay where they are to the bit. The impulses its contacts
@@ -18,15 +18,21 @@
 //!   a step overlapping one (the solver's restitution pushes it). Nothing else can move a
 //!   sleeping ball: a scene's gravity, walls and floors are fixed for the whole run. Without
 //!   gravity nothing sleeps: nothing presses balls together, so a still ball is a free one.
+//!
+//! A sleeping ball takes no part in the solver's stages until an awake ball can touch it,
+//! which the grid's pairs show as the step is prepared, and a step in which every ball sleeps
+//! does nothing at all. Box2D v3 keeps its sleeping islands in solver sets (`solver_set.c`).
 
+use super::step_context::StepContext;
 use crate::physics::ball::Ball;
+use crate::physics::tolerances::SLEEP_FRAMES;
 
 /// `island_of` for a ball that is awake.
 const AWAKE: u32 = u32::MAX;
 
 /// Which balls sleep, in which islands, and how long each awake ball has been calm.
 #[derive(Clone, Debug, Default)]
-pub struct Sleep {
+pub(super) struct Sleep {
     /// Per ball (scene order): steps in a row it ended slower than the sleep speed.
     calm: Vec<u32>,
     /// Per ball: the sleeping island it is in, or `AWAKE`.
@@ -81,7 +87,7 @@ impl Sleep {
 
     /// Counts a calm step for each awake ball of `balls` slower than `speed` px/frame, and
     /// starts the count again for the others.
-    pub fn count_calm_steps(&mut self, balls: &[Ball], speed: f64) {
+    fn count_calm_steps(&mut self, balls: &[Ball], speed: f64) {
         let limit = speed * speed;
         for ((calm, &island), ball) in self.calm.iter_mut().zip(&self.island_of).zip(balls) {
             if island == AWAKE {
@@ -92,13 +98,42 @@ impl Sleep {
     }
 
     /// Whether ball `ball` has been calm for `steps` steps or more.
-    pub fn calm_for(&self, ball: usize, steps: u32) -> bool {
+    fn calm_for(&self, ball: usize, steps: u32) -> bool {
         self.calm[ball] >= steps
+    }
+
+    /// After a step: counts each awake ball's calm steps, and puts to sleep each island of
+    /// the step (in `context`) whose balls have all been calm for [`SLEEP_FRAMES`].
+    pub fn fall_asleep(&mut self, balls: &mut [Ball], context: &StepContext) {
+        let stepping = &context.stepping;
+        if stepping.sleep_speed == 0.0 {
+            return; // without gravity nothing sleeps
+        }
+        self.count_calm_steps(balls, stepping.sleep_speed);
+        let needed = SLEEP_FRAMES * stepping.steps;
+        let (order, contacts) = (context.grid.order(), &context.contacts);
+        for island in &context.islands.list {
+            let members = context.islands.balls[island.balls.clone()]
+                .iter()
+                .map(|&k| order[k]);
+            if !members.clone().all(|i| self.calm_for(i, needed)) {
+                continue;
+            }
+            let pairs = contacts.pairs[island.pairs.clone()]
+                .iter()
+                .map(|c| &c.state);
+            let fixed = contacts.fixed[island.fixed.clone()]
+                .iter()
+                .map(|c| &c.state);
+            let impulses = pairs.chain(fixed).map(|state| (state.key, state.impulse));
+            let impulses = impulses.filter(|&(_, impulse)| impulse > 0.0);
+            self.put_to_sleep(balls, members, impulses);
+        }
     }
 
     /// Puts the island of `members` (scene indices, awake) to sleep: each stops where it is.
     /// `impulses` are its contacts' impulses, kept for when it wakes.
-    pub fn put_to_sleep(
+    fn put_to_sleep(
         &mut self,
         balls: &mut [Ball],
         members: impl Iterator<Item = usize>,

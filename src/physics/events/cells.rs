@@ -7,22 +7,24 @@
 //! leaving a cell is an event like any other, and each cell keeps its balls in a linked list
 //! so a move costs O(1) (Rapaport's cell lists).
 //!
-//! A ball changes cell only once it is a hair (`margin`) past the border, and the cells are
-//! widened by twice that, so rounding can neither make a ball hop back and forth across a
-//! border nor let two touching balls sit two cells apart. The outermost cells reach to
-//! infinity, so a ball that leaves the area the grid was laid over still has a cell.
+//! A ball changes cell only once it is a hair ([`CELL_MARGIN`] of the largest diameter) past
+//! the border, and the cells are widened by twice that, so rounding can neither make a ball
+//! hop back and forth across a border nor let two touching balls sit two cells apart. The
+//! outermost cells reach to infinity, so a ball that leaves the area the grid was laid over
+//! still has a cell.
 
 use std::ops::Range;
 
 use super::lists::Lists;
 use crate::physics::ball::Ball;
+use crate::physics::contacts::grid::cell_size;
 use crate::physics::integrate::poly::Poly;
-use crate::physics::tolerances::MAX_CELLS_PER_BALL;
+use crate::physics::tolerances::{CELL_MARGIN, MAX_CELLS_PER_BALL};
 use crate::physics::vec2::Vec2;
 
 /// Balls in cells, rebuilt at the start of every step into the same buffers.
 #[derive(Clone, Debug, Default)]
-pub struct Cells {
+pub(super) struct Cells {
     left: f64,
     top: f64,
     size: f64,
@@ -63,12 +65,13 @@ impl Cells {
             largest = largest.max(ball.radius);
         }
         let (width, height) = (right - left, bottom - top);
-        let most = MAX_CELLS_PER_BALL * balls.len().max(1) as f64;
-        self.margin = 1e-6 * 2.0 * largest;
-        self.size = (2.0 * largest + 4.0 * self.margin)
-            .max((width * height / most).sqrt())
-            .max(width.max(height) / most)
-            .max(f64::MIN_POSITIVE);
+        self.margin = CELL_MARGIN * 2.0 * largest;
+        self.size = cell_size(
+            2.0 * largest + 4.0 * self.margin,
+            width,
+            height,
+            balls.len(),
+        );
         // `as usize` saturates and maps NaN to 0, so no position can make an index out of range.
         self.columns = (width / self.size) as usize + 1;
         self.rows = (height / self.size) as usize + 1;

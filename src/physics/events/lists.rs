@@ -7,7 +7,7 @@ const NONE: u32 = u32::MAX;
 
 /// Numbered lists of balls, keeping their buffers when laid out again.
 #[derive(Clone, Debug, Default)]
-pub struct Lists {
+pub(super) struct Lists {
     /// First ball of each list.
     head: Vec<u32>,
     /// Per ball: the list it is in, and the next and previous ball in that list.

@@ -13,15 +13,15 @@
 //! into another cell of the grid. Each event changes one or two balls, and only their future
 //! events are predicted again.
 //!
-//! - [`queue`]: the calendar: each ball's next event, filed by the day of the step it falls
+//! - `queue`: the calendar: each ball's next event, filed by the day of the step it falls
 //!   on, with only today's events in a small binary heap (a calendar queue).
-//! - [`lists`]: balls in numbered lists (the grid's cells, the calendar's days), O(1) moves.
-//! - [`cells`]: the uniform grid that says which balls can meet soon, and when a ball leaves
+//! - `lists`: balls in numbered lists (the grid's cells, the calendar's days), O(1) moves.
+//! - `cells`: the uniform grid that says which balls can meet soon, and when a ball leaves
 //!   its cell.
 //! - [`system`]: one step of the whole scene, event after event; the rules that make inelastic
 //!   collapse finish; the counts it reports.
 
-pub mod cells;
-pub mod lists;
-pub mod queue;
+mod cells;
+mod lists;
+mod queue;
 pub mod system;

@@ -20,9 +20,9 @@
 
 use super::lists::Lists;
 
-/// What happens to a ball at its event.
+/// What kind of event a ball has next: what happens to it then.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum What {
+pub(super) enum EventKind {
     /// Nothing predicted: the event's time is infinite.
     Nothing,
     /// It touches ball number `.0`.
@@ -35,18 +35,18 @@ pub enum What {
 
 /// One ball's next event.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Event {
+pub(super) struct Event {
     /// When, in frames since the start of the step.
     pub time: f64,
-    pub what: What,
+    pub kind: EventKind,
     /// The partner's counter when this was predicted (0 without a partner).
     partner_count: u32,
 }
 
 /// No event: nothing predicted.
-pub const NOTHING: Event = Event {
+pub(super) const NOTHING: Event = Event {
     time: f64::INFINITY,
-    what: What::Nothing,
+    kind: EventKind::Nothing,
     partner_count: 0,
 };
 
@@ -55,7 +55,7 @@ const NOWHERE: u32 = u32::MAX;
 
 /// The balls' next events.
 #[derive(Clone, Debug, Default)]
-pub struct Queue {
+pub(super) struct Queue {
     next: Vec<Event>,
     /// Per ball: how often it has changed course.
     counts: Vec<u32>,
@@ -108,16 +108,17 @@ impl Queue {
         }
     }
 
-    /// `what` at `time`, as an event of a ball predicted now (it remembers the partner's
-    /// counter, so it can tell later whether the partner has changed course since).
-    pub fn event(&self, time: f64, what: What) -> Event {
-        let partner_count = match what {
-            What::Ball(other) => self.counts[other as usize],
+    /// An event of kind `kind` at `time`, as an event of a ball predicted now (it remembers
+    /// the partner's counter, so it can tell later whether the partner has changed course
+    /// since).
+    pub fn event(&self, time: f64, kind: EventKind) -> Event {
+        let partner_count = match kind {
+            EventKind::Ball(other) => self.counts[other as usize],
             _ => 0,
         };
         Event {
             time,
-            what,
+            kind,
             partner_count,
         }
     }
@@ -125,8 +126,8 @@ impl Queue {
     /// Whether `event` still stands: it has no partner, or its partner has not changed course
     /// since it was predicted.
     pub fn current(&self, event: &Event) -> bool {
-        match event.what {
-            What::Ball(other) => self.counts[other as usize] == event.partner_count,
+        match event.kind {
+            EventKind::Ball(other) => self.counts[other as usize] == event.partner_count,
             _ => true,
         }
     }
@@ -267,11 +268,11 @@ mod tests {
     fn events_come_out_earliest_first_and_out_of_date_ones_are_flagged() {
         let mut queue = Queue::default();
         queue.reset(4, 1.0);
-        let mut set = |ball, time, what| queue.set(ball, queue.event(time, what));
-        set(0, 0.5, What::Ball(1));
-        set(2, 0.75, What::Contact);
-        set(3, 0.9, What::Contact);
-        set(2, 0.25, What::Contact); // predicted again: replaces 0.75
+        let mut set = |ball, time, kind| queue.set(ball, queue.event(time, kind));
+        set(0, 0.5, EventKind::Ball(1));
+        set(2, 0.75, EventKind::Contact);
+        set(3, 0.9, EventKind::Contact);
+        set(2, 0.25, EventKind::Contact); // predicted again: replaces 0.75
         queue.changed(1); // ball 1 changed course: ball 0's event is out of date
         let popped: Vec<(usize, f64, bool)> = std::iter::from_fn(|| {
             let (ball, event, current) = queue.earliest()?;
@@ -290,7 +291,7 @@ mod tests {
     fn events_carried_into_the_next_step_move_back_by_its_length() {
         let mut queue = Queue::default();
         queue.reset(2, 1.0);
-        queue.set(0, queue.event(1.5, What::Contact));
+        queue.set(0, queue.event(1.5, EventKind::Contact));
         assert!(queue.earliest().is_none(), "nothing is due within the step");
         queue.carry_over();
         let next = queue.earliest().map(|(ball, event, _)| (ball, event.time));

@@ -34,7 +34,7 @@
 //!   event, it has left every ball as it found it (stopped, where it was), so every later
 //!   step would do the same: none is taken, and a settled scene costs nothing.
 //! - **TC model** (Luding & McNamara, "How to handle the inelastic collapse of a dissipative
-//!   hard-sphere gas with the TC model", 1998): a collision within [`TC_DURATION`] of either
+//!   hard-sphere gas with the TC model", 1998): a collision within `TC_DURATION` of either
 //!   ball's previous collision is elastic, so a cascade of collisions at one moment ends.
 //! - **A cap.** A step resolves at most [`MAX_EVENTS_PER_BALL`] events per ball. If it runs
 //!   out, every ball is flown to the time of the last event and the rest of the step is
@@ -42,10 +42,10 @@
 //!   dropped time is taken back). [`EventCounts`] reports each such step.
 
 use super::cells::Cells;
-use super::queue::{Event, Queue, What, NOTHING};
+use super::queue::{Event, EventKind, Queue, NOTHING};
 use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
-use crate::physics::integrate::exact::{self, Bounds, Contact, Support};
+use crate::physics::integrate::exact::{self, BallBounds, Contact, Support};
 use crate::physics::integrate::integrator::{Forces, Integrator};
 use crate::physics::integrate::poly::Poly;
 use crate::physics::integrate::toi;
@@ -72,7 +72,7 @@ pub struct EventCounts {
 
 /// Exact ball-ball contacts, keeping its buffers from step to step.
 #[derive(Clone, Debug)]
-pub struct EventDriven {
+pub(crate) struct EventDriven {
     /// Share of the approach speed kept after a bounce (0 to 1).
     restitution: f64,
     queue: Queue,
@@ -234,18 +234,18 @@ impl EventDriven {
             }
             events += 1;
             self.fly(&mut balls[i], i, now, step);
-            self.resolve(balls, i, event.what, now, step);
+            self.resolve(balls, i, event.kind, now, step);
         }
         (events, step.forces.dt)
     }
 
-    /// Resolves ball `i`'s event `what`, now (ball `i` is flown there), and predicts again
-    /// the events of the balls it changed.
-    fn resolve(&mut self, balls: &mut [Ball], i: usize, what: What, now: f64, step: &Step) {
+    /// Resolves ball `i`'s event of kind `kind`, now (ball `i` is flown there), and predicts
+    /// again the events of the balls it changed.
+    fn resolve(&mut self, balls: &mut [Ball], i: usize, kind: EventKind, now: f64, step: &Step) {
         let forces = step.forces;
-        match what {
-            What::Nothing => {}
-            What::Ball(j) => {
+        match kind {
+            EventKind::Nothing => {}
+            EventKind::Ball(j) => {
                 let j = j as usize;
                 self.fly(&mut balls[j], j, now, step);
                 self.collide(balls, i, j, forces, now);
@@ -255,18 +255,18 @@ impl EventDriven {
                 self.predict(balls, i, step);
                 self.predict(balls, j, step);
             }
-            What::Contact => {
+            EventKind::Contact => {
                 if let Some(contact) = self.contact[i] {
                     contact.bounce(&mut balls[i], forces);
                     self.counts.contacts += 1;
                 }
-                let bounds = Bounds::of(&balls[i], step.effects);
+                let bounds = BallBounds::of(&balls[i], step.effects);
                 self.flight[i] = bounds.supported(&balls[i], forces);
                 self.held[i] = self.flight[i] != *forces;
                 self.queue.changed(i);
                 self.predict(balls, i, step);
             }
-            What::Cell { axis, towards } => {
+            EventKind::Cell { axis, towards } => {
                 // The ball keeps its course, so events other balls predicted with it stand,
                 // and so does its own bounce unless its partner changed course since: then
                 // only the balls of the cells it now comes near need looking at.
@@ -336,7 +336,7 @@ impl EventDriven {
         self.support.extend(
             balls
                 .iter()
-                .map(|ball| Bounds::of(ball, step.effects).support(ball)),
+                .map(|ball| BallBounds::of(ball, step.effects).support(ball)),
         );
         self.held.clear();
         self.held.resize(balls.len(), false);
@@ -399,7 +399,7 @@ impl EventDriven {
                     continue;
                 }
                 let ball = &balls[i];
-                let mut support = Bounds::of(ball, step.effects).near(ball, SLEEP_GAP);
+                let mut support = BallBounds::of(ball, step.effects).near(ball, SLEEP_GAP);
                 let asleep = &self.asleep;
                 self.cells.neighbours(i, |j| {
                     if j != i && asleep[j] {
@@ -487,7 +487,7 @@ impl EventDriven {
             Some((axis, towards)) => self.cells.entered(i, axis, towards, visit),
         }
         if let (time, Some(j)) = first {
-            self.bounce[i] = self.queue.event(now + time, What::Ball(j as u32));
+            self.bounce[i] = self.queue.event(now + time, EventKind::Ball(j as u32));
         }
         self.schedule(balls, i, &path, step);
     }
@@ -498,24 +498,24 @@ impl EventDriven {
         let now = self.clock[i];
         let bounce = self.bounce[i];
         // The earliest so far, as time from now; later candidates are not looked for.
-        let mut first = (bounce.time.min(step.horizon) - now, bounce.what);
+        let mut first = (bounce.time.min(step.horizon) - now, bounce.kind);
         if let Some((time, axis, towards)) = self.cells.exit(i, path, first.0) {
-            first = (time, What::Cell { axis, towards });
+            first = (time, EventKind::Cell { axis, towards });
         }
         // Walls and floors last: with the horizon cut short, far ones are skipped unsolved.
         let ball = &balls[i];
-        let bounds = Bounds::of(ball, step.effects);
+        let bounds = BallBounds::of(ball, step.effects);
         self.contact[i] = bounds
             .first_contact(ball, path, first.0)
-            .filter(|&(time, _)| time < first.0 || first.1 == What::Nothing)
+            .filter(|&(time, _)| time < first.0 || first.1 == EventKind::Nothing)
             .map(|(time, contact)| {
-                first = (time, What::Contact);
+                first = (time, EventKind::Contact);
                 contact
             });
         let next = match first {
-            (_, What::Ball(_)) => bounce,
-            (_, What::Nothing) => NOTHING,
-            (time, what) => self.queue.event(now + time, what),
+            (_, EventKind::Ball(_)) => bounce,
+            (_, EventKind::Nothing) => NOTHING,
+            (time, kind) => self.queue.event(now + time, kind),
         };
         self.queue.set(i, next);
     }
@@ -564,12 +564,9 @@ impl EventDriven {
     /// Bounces balls `i` and `j`, which touch now, along the line through their centres.
     ///
     /// Both get the same impulse in opposite directions, so momentum is kept; the relative
-    /// normal speed `u < 0` becomes `−e·u`, so with `e ≤ 1` kinetic energy never rises.
-    ///
-    /// The rest rule: with `e < 1`, a ball that gravity presses onto a held ball, and whose
-    /// rebound would be slower than `REST_SPEED`, comes to rest on it as on a wall: it loses
-    /// its normal speed relative to the held ball, which is part of what holds it and is not
-    /// pushed (the floor below takes the impulse, as a wall does).
+    /// normal speed `u < 0` becomes `−e·u`, so with `e ≤ 1` kinetic energy never rises. The
+    /// TC model chooses `e`; a sleeping ball struck hard wakes; and with `e < 1` a rebound
+    /// slower than `REST_SPEED` may end in rest instead (the rest rule).
     fn collide(&mut self, balls: &mut [Ball], i: usize, j: usize, forces: &Forces, now: f64) {
         let (a, b) = (&balls[i], &balls[j]);
         let offset = b.position() - a.position();
@@ -582,52 +579,86 @@ impl EventDriven {
         if approach >= 0.0 {
             return;
         }
+        let e = self.restitution_now([i, j], now);
+        let rebound = -e * approach;
+        self.wake_if_struck_hard([i, j], rebound, forces);
+        if e < 1.0 && rebound < REST_SPEED && self.come_to_rest(balls, [i, j], n, forces) {
+            return;
+        }
+        self.exchange_impulse(balls, [i, j], n, (1.0 + e) * approach);
+    }
+
+    /// The restitution of a collision of balls `i` and `j` now, by the TC model: elastic
+    /// within [`TC_DURATION`] of either ball's previous collision, the scene's otherwise.
+    /// Notes the time of this one for both.
+    fn restitution_now(&mut self, [i, j]: [usize; 2], now: f64) -> f64 {
         let time = self.elapsed + now;
         let recent = [i, j].map(|k| time - self.last_collision[k] < TC_DURATION);
         self.last_collision[i] = time;
         self.last_collision[j] = time;
-        let e = if recent[0] || recent[1] {
+        if recent[0] || recent[1] {
             1.0
         } else {
             self.restitution
-        };
-        // A sleeping ball struck hard enough to rebound at the rest speed wakes (and falls
-        // again); struck softer it stays put, as a wall would.
-        for k in [i, j] {
-            if self.asleep[k] && -e * approach >= REST_SPEED {
+        }
+    }
+
+    /// Wakes each sleeping ball of the pair struck hard enough to rebound at the rest speed,
+    /// `rebound` px/frame or more (and it falls again); struck softer it stays put, as a wall
+    /// would.
+    fn wake_if_struck_hard(&mut self, pair: [usize; 2], rebound: f64, forces: &Forces) {
+        for k in pair {
+            if self.asleep[k] && rebound >= REST_SPEED {
                 self.asleep[k] = false;
                 self.held[k] = false;
                 self.flight[k] = *forces;
             }
         }
-        if e < 1.0 && -e * approach < REST_SPEED {
-            let resting = if self.held[i] && exact::pressed(forces, n) {
-                Some((i, j, n))
-            } else if self.held[j] && exact::pressed(forces, -n) {
-                Some((j, i, -n))
-            } else {
-                None
-            };
-            if let Some((holder, resting, n)) = resting {
-                let holder = balls[holder].velocity();
-                let ball = &mut balls[resting];
-                let into = (ball.velocity() - holder).dot(n);
-                let velocity = ball.velocity() - into * n;
-                (ball.vx, ball.vy) = (velocity.x, velocity.y);
-                // From now on gravity no longer presses it into the held ball, as on a wall:
-                // on a curved flight (Verlet's, RK4's) it would press in again at once.
-                if !self.asleep[resting] {
-                    self.support[resting].push(n);
-                    self.flight[resting] = self.support[resting].hold(forces);
-                }
-                self.held[i] = true;
-                self.held[j] = true;
-                return;
-            }
+    }
+
+    /// The rest rule: a ball of the pair that gravity presses onto the other, a held ball,
+    /// comes to rest on it as on a wall: it loses its normal speed relative to the held ball,
+    /// which is part of what holds it and is not pushed (the floor below takes the impulse, as
+    /// a wall does). `n` is the normal from `i` to `j`. Returns whether one came to rest.
+    fn come_to_rest(
+        &mut self,
+        balls: &mut [Ball],
+        [i, j]: [usize; 2],
+        n: Vec2,
+        forces: &Forces,
+    ) -> bool {
+        let resting = if self.held[i] && exact::pressed(forces, n) {
+            Some((i, j, n))
+        } else if self.held[j] && exact::pressed(forces, -n) {
+            Some((j, i, -n))
+        } else {
+            None
+        };
+        let Some((holder, resting, n)) = resting else {
+            return false;
+        };
+        let holder = balls[holder].velocity();
+        let ball = &mut balls[resting];
+        let into = (ball.velocity() - holder).dot(n);
+        let velocity = ball.velocity() - into * n;
+        (ball.vx, ball.vy) = (velocity.x, velocity.y);
+        // From now on gravity no longer presses it into the held ball, as on a wall: on a
+        // curved flight (Verlet's, RK4's) it would press in again at once.
+        if !self.asleep[resting] {
+            self.support[resting].push(n);
+            self.flight[resting] = self.support[resting].hold(forces);
         }
-        let (mass_a, mass_b) = (mass(a.radius), mass(b.radius));
+        self.held[i] = true;
+        self.held[j] = true;
+        true
+    }
+
+    /// Gives balls `i` and `j` opposite impulses along `n` (from `i` to `j`) that change
+    /// their relative normal speed by `change`, shared by mass; a sleeping ball is not moved,
+    /// and the other takes all of it.
+    fn exchange_impulse(&self, balls: &mut [Ball], [i, j]: [usize; 2], n: Vec2, change: f64) {
+        let (mass_a, mass_b) = (mass(balls[i].radius), mass(balls[j].radius));
         let total = mass_a + mass_b;
-        let change = (1.0 + e) * approach;
         let (kick_a, kick_b) = match (self.asleep[i], self.asleep[j]) {
             (true, _) => (0.0, change),
             (_, true) => (change, 0.0),

@@ -30,13 +30,15 @@ use super::toi;
 use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
 use crate::physics::floor::Floor;
-use crate::physics::tolerances::{FLOOR_TOUCH_GAP, MAX_EVENTS_PER_STEP, REST_SPEED, TOUCH_SPEED};
+use crate::physics::tolerances::{
+    FLOOR_TOUCH_GAP, MAX_EVENTS_PER_STEP, MAX_SUPPORTS, REST_SPEED, TOUCH_SPEED,
+};
 use crate::physics::vec2::Vec2;
 use crate::physics::walls::Walls;
 
 /// One wall of the box, seen from a ball of a given radius.
 #[derive(Clone, Copy, Debug)]
-pub struct Side {
+pub(crate) struct Side {
     /// 0 for the left and right walls (they stop x), 1 for the top and bottom ones.
     axis: usize,
     /// The coordinate of the centre when the ball touches the wall.
@@ -107,18 +109,18 @@ impl Side {
 /// The rest rule: whether a bounce with rebound speed `rebound` off a surface of unit normal
 /// `n` that keeps `damping` of the speed ends in rest. Elastic bounces never shrink, so they
 /// never need it.
-pub fn rests(rebound: f64, damping: f64, forces: &Forces, n: Vec2) -> bool {
+pub(crate) fn rests(rebound: f64, damping: f64, forces: &Forces, n: Vec2) -> bool {
     damping < 1.0 && rebound < REST_SPEED && pressed(forces, n)
 }
 
 /// Whether gravity pushes a ball into a surface whose unit normal (pointing at the ball) is `n`.
-pub fn pressed(forces: &Forces, n: Vec2) -> bool {
+pub(crate) fn pressed(forces: &Forces, n: Vec2) -> bool {
     forces.gravity.is_some_and(|g| g.dot(n) < 0.0)
 }
 
 /// Something fixed a ball can touch.
 #[derive(Clone, Copy, Debug)]
-pub enum Contact {
+pub(crate) enum Contact {
     Wall(Side),
     /// A floor's face; `normal` points from the floor to the ball.
     Face {
@@ -171,18 +173,16 @@ fn bounce_along(ball: &mut Ball, n: Vec2, damping: f64, forces: &Forces) {
 /// `crate::physics::events` other balls): they hold the part of gravity that presses into
 /// them.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct Support {
-    normals: [Vec2; Support::MAX],
+pub(crate) struct Support {
+    normals: [Vec2; MAX_SUPPORTS],
     len: usize,
 }
 
 impl Support {
-    /// More surfaces than this at once hold a ball completely anyway.
-    const MAX: usize = 8;
-
-    /// Adds a surface the ball rests on (beyond `MAX`, the ball is held completely).
+    /// Adds a surface the ball rests on (beyond [`MAX_SUPPORTS`], the ball is held
+    /// completely).
     pub fn push(&mut self, n: Vec2) {
-        if self.len < Self::MAX {
+        if self.len < MAX_SUPPORTS {
             self.normals[self.len] = n;
         }
         self.len += 1;
@@ -195,7 +195,7 @@ impl Support {
     /// normals less than half a turn apart (a wall beside the ball counts: it stops a slide
     /// towards it, and so does a ball above it on the side it would slide to).
     pub fn hold_completely(&self, g: Vec2) -> bool {
-        if self.len > Self::MAX {
+        if self.len > MAX_SUPPORTS {
             return true;
         }
         let up = -g;
@@ -223,7 +223,7 @@ impl Support {
         let Some(gravity) = held.gravity.as_mut() else {
             return held;
         };
-        if self.len > Self::MAX {
+        if self.len > MAX_SUPPORTS {
             *gravity = Vec2::ZERO;
             return held;
         }
@@ -245,9 +245,14 @@ impl Support {
 
 /// One step of `forces.dt` frames with exact bounces off the walls and floors of `effects`.
 /// Returns `false` if the step hit [`MAX_EVENTS_PER_STEP`] and its rest was dropped.
-pub fn step(integrator: Integrator, ball: &mut Ball, forces: &Forces, effects: &Effects) -> bool {
+pub(crate) fn step(
+    integrator: Integrator,
+    ball: &mut Ball,
+    forces: &Forces,
+    effects: &Effects,
+) -> bool {
     put_back(ball, effects);
-    let bounds = Bounds::of(ball, effects);
+    let bounds = BallBounds::of(ball, effects);
     let mut flight = bounds.supported(ball, forces);
     integrator.kick_before(ball, &flight);
     let mut left = forces.dt;
@@ -274,22 +279,23 @@ pub fn step(integrator: Integrator, ball: &mut Ball, forces: &Forces, effects: &
 
 /// A ball that starts a step inside a wall (spawned there) is put back first, as the lesson
 /// would, so every distance to a wall starts at zero or more.
-pub fn put_back(ball: &mut Ball, effects: &Effects) {
+pub(crate) fn put_back(ball: &mut Ball, effects: &Effects) {
     if let Some(walls) = &effects.walls {
         ball.bounce_off_walls(walls);
     }
 }
 
-/// The walls and floors one ball can touch during a step.
-pub struct Bounds<'a> {
+/// The bounds of one ball's flight: the walls and floors it can touch during a step, as it
+/// (its radius) sees them.
+pub(crate) struct BallBounds<'a> {
     sides: Option<[Side; 4]>,
     floors: &'a [Floor],
 }
 
-impl<'a> Bounds<'a> {
+impl<'a> BallBounds<'a> {
     /// The walls and floors of `effects` as `ball` (its radius) sees them.
-    pub fn of(ball: &Ball, effects: &'a Effects) -> Bounds<'a> {
-        Bounds {
+    pub fn of(ball: &Ball, effects: &'a Effects) -> BallBounds<'a> {
+        BallBounds {
             sides: effects.walls.as_ref().map(|walls| Side::all(walls, ball)),
             floors: &effects.floors,
         }

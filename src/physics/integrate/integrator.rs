@@ -18,8 +18,9 @@ use crate::physics::vec2::Vec2;
 use crate::work::{tally, Work};
 
 /// What the integrators move: a centre and a velocity. A [`Ball`] is one; the contact solver
-/// moves a compact copy of its balls, without their trails (`Body` in `crate::physics::contacts`).
-pub trait Movable {
+/// moves a compact copy of its balls, without their trails (`Body`, in
+/// `crate::physics::contacts::contact`).
+pub(crate) trait Movable {
     /// Centre and velocity, `[x, y, vx, vy]` in px and px/frame, to change in place.
     fn motion(&mut self) -> [&mut f64; 4];
 }
@@ -46,7 +47,8 @@ pub enum Integrator {
 
 /// Gravity and drag for steps of length `dt`, worked out once per frame, not once per step.
 /// Drag costs one logarithm per ball-frame (and one power with substeps); no drag costs nothing.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The default is no force over no time, for a solver before its first frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Forces {
     /// Step length, frames.
     pub dt: f64,
@@ -67,7 +69,7 @@ pub struct Drag {
 
 impl Forces {
     /// The forces of `effects` for one step per frame (`dt = 1`).
-    pub fn new(effects: &Effects) -> Forces {
+    pub(crate) fn new(effects: &Effects) -> Forces {
         Forces {
             dt: 1.0,
             gravity: effects.gravity,
@@ -80,7 +82,7 @@ impl Forces {
 
     /// The same forces for a frame split into `steps` equal steps. With one step nothing
     /// changes, so the lesson's `1 - drag` is kept to the last bit.
-    pub fn split(self, steps: u32) -> Forces {
+    pub(crate) fn split(self, steps: u32) -> Forces {
         if steps == 1 {
             return self;
         }
@@ -122,28 +124,28 @@ impl Forces {
 
 impl Integrator {
     /// Advances `ball` by one step of `forces.dt` frames under gravity and drag (no collisions).
-    pub fn step(self, ball: &mut impl Movable, forces: &Forces) {
+    pub(crate) fn step(self, ball: &mut impl Movable, forces: &Forces) {
         self.kick_before(ball, forces);
         self.fly(ball, forces, forces.dt);
         self.kick_after(ball, forces);
     }
 
     /// The velocity change at the start of a step (semi-implicit Euler's whole `v += a·dt`).
-    pub fn kick_before(self, ball: &mut impl Movable, forces: &Forces) {
+    pub(crate) fn kick_before(self, ball: &mut impl Movable, forces: &Forces) {
         if self == Integrator::SemiImplicitEuler {
             kick(ball, forces);
         }
     }
 
     /// The velocity change at the end of a step (explicit Euler's whole `v += a·dt`).
-    pub fn kick_after(self, ball: &mut impl Movable, forces: &Forces) {
+    pub(crate) fn kick_after(self, ball: &mut impl Movable, forces: &Forces) {
         if self == Integrator::ExplicitEuler {
             kick(ball, forces);
         }
     }
 
     /// Moves `ball` along the step's flight for `time` frames (`time ≤ forces.dt`).
-    pub fn fly(self, ball: &mut impl Movable, forces: &Forces, time: f64) {
+    pub(crate) fn fly(self, ball: &mut impl Movable, forces: &Forces, time: f64) {
         let [x, y, vx, vy] = ball.motion();
         match self {
             Integrator::ExplicitEuler | Integrator::SemiImplicitEuler => {
@@ -169,7 +171,7 @@ impl Integrator {
 
     /// Where the flight takes the centre after `τ` frames, as a polynomial in `τ` per axis:
     /// exactly the position `fly(…, τ)` computes, so its roots are the flight's times of impact.
-    pub fn path(self, ball: &Ball, forces: &Forces) -> [Poly; 2] {
+    pub(crate) fn path(self, ball: &Ball, forces: &Forces) -> [Poly; 2] {
         // Two plain calls, not a `map` over the axes: predicting events builds a path after
         // every event, and the compiler inlines these.
         [
@@ -201,7 +203,7 @@ impl Integrator {
     /// RK4 treat drag as a force, which overshoots once `λ·dt` passes 2 (Verlet) or 2.78 (RK4);
     /// keeping `λ·dt ≤ 1` also keeps drag from ever reversing a velocity. The lesson's drag
     /// (λ = 0.002) never needs more steps; a drag of 0.99 (λ = 4.6) needs 5 a frame.
-    pub fn steps_per_frame(self, substeps: u32, frame: &Forces) -> u32 {
+    pub(crate) fn steps_per_frame(self, substeps: u32, frame: &Forces) -> u32 {
         let curved = matches!(self, Integrator::VelocityVerlet | Integrator::Rk4);
         match frame.drag {
             Some(drag) if curved && drag.rate.is_finite() => {

@@ -11,13 +11,15 @@
 
 use std::ops::{Add, Mul, Sub};
 
+use crate::physics::tolerances::LINE_ROOT_ROUNDINGS;
+
 /// The highest degree held: RK4's flight is a quartic, and a squared distance along two
 /// such flights is of degree 8.
 const MAX_DEGREE: usize = 8;
 
 /// `c[0] + c[1]·t + c[2]·t² + …`
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Poly {
+pub(crate) struct Poly {
     c: [f64; MAX_DEGREE + 1],
     /// Index of the highest non-zero coefficient (0 for a constant).
     degree: usize,
@@ -129,7 +131,7 @@ impl Poly {
             return Some((root, after));
         }
         let rounding = f64::EPSILON * (value.abs() + (slope * root).abs());
-        let spread = 4.0 * (rounding / -slope + f64::EPSILON * root);
+        let spread = LINE_ROOT_ROUNDINGS * (rounding / -slope + f64::EPSILON * root);
         let (low, high) = ((root - spread).max(0.0), (root + spread).min(end));
         if self.at(low) >= 0.0 && self.at(high) < 0.0 {
             return Some(self.bisect(low, high));

@@ -12,7 +12,7 @@
 //!
 //! Rounding can leave two touching things a hair inside each other. The stable rule is: a pair
 //! that overlaps and approaches collides now; a pair that overlaps and parts is left alone; a
-//! pair whose approach is slower than [`TOUCH_SPEED`] is not approaching (it is resting or
+//! pair whose approach is slower than `TOUCH_SPEED` is not approaching (it is resting or
 //! sliding against the other), so rounding can never make it collide again and again.
 
 use super::poly::Poly;
@@ -21,7 +21,7 @@ use crate::physics::vec2::Vec2;
 
 /// The first time in `[0, end]` at which two centres whose offset (second minus first) moves
 /// as `relative` come within `reach` of each other while approaching, if they do.
-pub fn first_touch(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
+pub(crate) fn first_touch(relative: &[Poly; 2], reach: f64, end: f64) -> Option<f64> {
     if relative[0].degree() <= 1 && relative[1].degree() <= 1 {
         // The offset now is the constant term, its velocity the linear one.
         let term = |i| Vec2::new(relative[0].coefficient(i), relative[1].coefficient(i));
