@@ -43,7 +43,7 @@ use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
 use crate::physics::tolerances::{MAX_PAIRS_PER_BALL, PAIR_MARGIN};
 use crate::physics::vec2::Vec2;
-use crate::physics::work::{tally, Work};
+use crate::work::{tally, Work};
 
 /// The warm-start memory, all of the contacts that carries from one step to the next: the
 /// impulse each contact ended the last step with, by contact key, sorted by key (only those
