@@ -11,14 +11,14 @@ use crate::job::{RunError, Summary};
 use crate::scene::InvalidValue;
 
 /// The flag a scene key came from: `balls[0].frame_ms` → `--frame-ms`.
-pub fn flag(key: &str) -> String {
+pub(crate) fn flag(key: &str) -> String {
     let name = key.rsplit('.').next().unwrap_or(key);
     format!("--{}", name.replace('_', "-"))
 }
 
 /// What a run wrote, in one line: every file with its size, how many frames the GIF holds
 /// (`300 frames, shown as 108 pictures` where repeated frames were merged), the time.
-pub fn summary_line(summary: &Summary) -> String {
+pub(crate) fn summary_line(summary: &Summary) -> String {
     let frames = summary
         .pictures
         .map(|pictures| match pictures == summary.frames {
@@ -63,7 +63,7 @@ impl Failure {
 
     /// A run's error; a value the scene cannot take is named as the user knows it (`typed`
     /// says which settings they typed).
-    pub fn of_run(error: &RunError, typed: impl Fn(&str) -> bool) -> Failure {
+    pub(crate) fn of_run(error: &RunError, typed: impl Fn(&str) -> bool) -> Failure {
         let line = match error {
             RunError::Invalid(bad) => format!("error: {}", refuse_value(bad, typed)),
             other => format!("error: {other}"),
@@ -75,7 +75,7 @@ impl Failure {
     }
 
     /// The failure with `hint` added to its line, before where it says which help to read.
-    pub fn hinted(self, hint: &str) -> Failure {
+    pub(crate) fn hinted(self, hint: &str) -> Failure {
         let line = match self.line.rsplit_once("; see ") {
             Some((what, help)) => format!("{what}; {hint}; see {help}"),
             None => format!("{}; {hint}", self.line),
@@ -84,7 +84,7 @@ impl Failure {
     }
 
     /// Input the program cannot use (exit 2).
-    pub fn input(why: impl std::fmt::Display) -> Failure {
+    pub(crate) fn input(why: impl std::fmt::Display) -> Failure {
         Failure {
             line: format!("error: {why}"),
             code: 2,
@@ -96,7 +96,7 @@ impl Failure {
 /// allowed, for a near miss the nearest name, and the help to read (`subcommand`'s, if the
 /// mistake is in one). (Help and the version are no error: the
 /// command line prints them as clap does.)
-pub fn refuse(error: clap::Error, subcommand: Option<&str>) -> Failure {
+pub(crate) fn refuse(error: clap::Error, subcommand: Option<&str>) -> Failure {
     let mut line = what_was_wrong(&error);
     if let Some(ContextValue::Strings(allowed)) = error.get(ContextKind::ValidValue) {
         if !allowed.is_empty() {
@@ -182,7 +182,7 @@ fn decimal_comma(value: &str) -> String {
 
 /// A value the scene cannot take, named as the user knows it: the flag they typed, or the
 /// scene's own value that what they typed no longer fits (`--radius 60` with the default x).
-pub fn refuse_value(bad: &InvalidValue, typed: impl Fn(&str) -> bool) -> String {
+pub(crate) fn refuse_value(bad: &InvalidValue, typed: impl Fn(&str) -> bool) -> String {
     let name = bad.key.rsplit('.').next().unwrap_or(&bad.key);
     if typed(name) {
         return format!(
@@ -202,7 +202,7 @@ pub fn refuse_value(bad: &InvalidValue, typed: impl Fn(&str) -> bool) -> String 
 }
 
 /// A whole number from 0 up, said so when it is not (`--seed -1`).
-pub fn whole_number(text: &str) -> Result<u64, String> {
+pub(crate) fn whole_number(text: &str) -> Result<u64, String> {
     text.parse()
         .map_err(|_| format!("must be a whole number from 0 to {}", u64::MAX))
 }
@@ -216,17 +216,17 @@ fn number_in(text: &str, low: f64, high: f64, allowed: &str) -> Result<f64, Stri
 }
 
 /// A number of seconds from 0 up, fractions allowed (`--time-budget 0.5`).
-pub fn seconds(text: &str) -> Result<f64, String> {
+pub(crate) fn seconds(text: &str) -> Result<f64, String> {
     let allowed = "must be a number of seconds from 0 up, e.g. 0.5 or 3600";
     number_in(text, 0.0, f64::MAX, allowed)
 }
 
 /// A distance from 0 up, fractions allowed (`--tolerance 0.5`).
-pub fn distance(text: &str) -> Result<f64, String> {
+pub(crate) fn distance(text: &str) -> Result<f64, String> {
     number_in(text, 0.0, f64::MAX, "must be a number from 0 up, e.g. 0.5")
 }
 
 /// A share from 0 to 1 (`--threshold 0.1`).
-pub fn share(text: &str) -> Result<f64, String> {
+pub(crate) fn share(text: &str) -> Result<f64, String> {
     number_in(text, 0.0, 1.0, "must be a number from 0 to 1, e.g. 0.1")
 }

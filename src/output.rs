@@ -13,10 +13,10 @@ use std::path::{Path, PathBuf};
 use tempfile::NamedTempFile;
 
 /// The path that means standard output.
-pub const STDOUT: &str = "-";
+pub(crate) const STDOUT: &str = "-";
 
 /// Whether `path` is `-`, standard output.
-pub fn is_stdout(path: &Path) -> bool {
+pub(crate) fn is_stdout(path: &Path) -> bool {
     path.as_os_str() == STDOUT
 }
 
@@ -38,7 +38,11 @@ const PICTURE_FORMATS: [&str; 3] = ["gif", "png", "svg"];
 impl Output<'_> {
     /// A file output whose format the flag fixes (`--gif`, `--png`): `-` is refused, and so is
     /// a name ending in another picture format's extension.
-    pub fn picture<'a>(flag: &'static str, path: &'a Path, format: &'static str) -> Output<'a> {
+    pub(crate) fn picture<'a>(
+        flag: &'static str,
+        path: &'a Path,
+        format: &'static str,
+    ) -> Output<'a> {
         Output {
             format: Some(format),
             ..Output::file(flag, path)
@@ -56,7 +60,7 @@ impl Output<'_> {
     }
 
     /// A stream output (the trace): `-` is standard output.
-    pub fn stream<'a>(flag: &'static str, path: &'a Path) -> Output<'a> {
+    pub(crate) fn stream<'a>(flag: &'static str, path: &'a Path) -> Output<'a> {
         Output {
             may_be_stdout: true,
             ..Output::file(flag, path)
@@ -90,7 +94,7 @@ pub struct OutputError {
 
 impl OutputError {
     /// Ties an I/O failure to the file it was for.
-    pub fn at(path: &Path) -> impl Fn(io::Error) -> OutputError + '_ {
+    pub(crate) fn at(path: &Path) -> impl Fn(io::Error) -> OutputError + '_ {
         move |source| OutputError {
             path: path.to_path_buf(),
             source,
@@ -211,7 +215,7 @@ fn special_file(_kind: &fs::FileType) -> &'static str {
 /// Whether a file name is one Windows keeps for a device in every folder: `CON`, `PRN`, `AUX`,
 /// `NUL`, `COM1`-`COM9`, `LPT1`-`LPT9` (and the superscript ¹²³ forms), in any case, with any
 /// extension and trailing dots or spaces. Writing `nul.gif` there writes to no file at all.
-pub fn is_reserved_on_windows(name: &std::ffi::OsStr) -> bool {
+pub(crate) fn is_reserved_on_windows(name: &std::ffi::OsStr) -> bool {
     let name = name.to_string_lossy();
     let stem = name.split('.').next().unwrap_or_default();
     let stem = stem.trim_end_matches([' ', '.']).to_ascii_uppercase();
@@ -328,11 +332,6 @@ impl AtomicFile {
         self.temp.as_file()
     }
 
-    /// The path as given.
-    pub fn path(&self) -> &Path {
-        &self.path
-    }
-
     /// Makes the written bytes durable and readable like any file we write; returns the size.
     fn finish(&self) -> Result<u64, OutputError> {
         let at = || OutputError::at(&self.path);
@@ -434,13 +433,13 @@ pub fn commit_all(files: Vec<AtomicFile>) -> Result<Vec<u64>, OutputError> {
 
 /// Standard output for a stream such as the trace. Once its reader has gone (`| head`),
 /// it falls silent instead of failing, as Unix filters do, and the run carries on.
-pub struct StdoutStream {
+pub(crate) struct StdoutStream {
     out: io::Stdout,
     closed: bool,
 }
 
 impl StdoutStream {
-    pub fn new() -> StdoutStream {
+    pub(crate) fn new() -> StdoutStream {
         StdoutStream {
             out: io::stdout(),
             closed: false,

@@ -27,7 +27,7 @@ pub fn looks_long(elapsed: Duration, done: u64, total: u64) -> bool {
 /// of the time left is sound, but it is drawn only once the job looks long; it is cleared
 /// when the job is done or dropped, so the summary line prints on a clean terminal.
 #[derive(Debug)]
-pub struct Progress {
+pub(crate) struct Progress {
     started: Instant,
     /// None when asked not to show one (`--quiet`) or nobody would see it.
     bar: Option<ProgressBar>,
@@ -36,7 +36,7 @@ pub struct Progress {
 
 impl Progress {
     /// Progress over no frames yet; `wanted` false means never show a bar.
-    pub fn new(wanted: bool) -> Progress {
+    pub(crate) fn new(wanted: bool) -> Progress {
         let visible = wanted && std::io::stderr().is_terminal();
         let style = ProgressStyle::with_template("{wide_bar} {pos}/{len} frames, {eta} left")
             .unwrap_or_else(|_| ProgressStyle::default_bar());
@@ -51,14 +51,14 @@ impl Progress {
     }
 
     /// Adds a pass of `frames` frames to the total.
-    pub fn add_frames(&self, frames: u32) {
+    pub(crate) fn add_frames(&self, frames: u32) {
         if let Some(bar) = &self.bar {
             bar.inc_length(frames.into());
         }
     }
 
     /// Notes that one more frame is finished.
-    pub fn frame_done(&self) {
+    pub(crate) fn frame_done(&self) {
         let Some(bar) = &self.bar else { return };
         bar.inc(1);
         let (done, total) = (bar.position(), bar.length().unwrap_or(0));
@@ -69,7 +69,7 @@ impl Progress {
     }
 
     /// Clears the bar off the terminal.
-    pub fn clear(&self) {
+    pub(crate) fn clear(&self) {
         if let Some(bar) = &self.bar {
             bar.finish_and_clear();
         }

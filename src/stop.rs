@@ -22,7 +22,7 @@ pub struct Signal {
 
 impl Signal {
     /// The exit code of a run stopped by this request.
-    pub fn exit_code(&self) -> u8 {
+    pub(crate) fn exit_code(&self) -> u8 {
         self.exit_code
     }
 }
@@ -38,14 +38,14 @@ pub struct Stop {
 impl Stop {
     /// Watches for the stop signals (Ctrl-C; on Unix also SIGTERM and SIGHUP): each one
     /// is noted here instead of ending the process at once.
-    pub fn on_signals() -> io::Result<Stop> {
+    pub(crate) fn on_signals() -> io::Result<Stop> {
         let stop = Stop::default();
         platform::watch(&stop.request)?;
         Ok(stop)
     }
 
     /// The request that came, if one did.
-    pub fn requested(&self) -> Option<Signal> {
+    pub(crate) fn requested(&self) -> Option<Signal> {
         let noted = self.request.load(Ordering::Relaxed);
         noted.checked_sub(1).and_then(|k| STOPPING.get(k)).copied()
     }
@@ -83,7 +83,7 @@ mod platform {
     use std::sync::Arc;
 
     /// signal-hook's handler stores the value: the one thing a signal handler may safely do.
-    pub fn watch(request: &Arc<AtomicUsize>) -> io::Result<()> {
+    pub(crate) fn watch(request: &Arc<AtomicUsize>) -> io::Result<()> {
         for (k, signal) in STOPPING.iter().enumerate() {
             signal_hook::flag::register_usize(signal.number, Arc::clone(request), k + 1)?;
         }
@@ -120,7 +120,7 @@ mod platform {
         1
     }
 
-    pub fn watch(request: &Arc<AtomicUsize>) -> io::Result<()> {
+    pub(crate) fn watch(request: &Arc<AtomicUsize>) -> io::Result<()> {
         if REQUEST.set(Arc::clone(request)).is_err() {
             return Err(io::Error::other("the Ctrl-C handler is already installed"));
         }

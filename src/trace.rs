@@ -6,15 +6,15 @@ use std::io::{self, Write};
 use crate::physics::ball::Ball;
 
 /// The CSV's first line.
-pub const HEADER: &str = "frame,ball,x,y,vx,vy";
+pub(crate) const HEADER: &str = "frame,ball,x,y,vx,vy";
 
 /// Writes the header.
-pub fn write_header(out: &mut impl Write) -> io::Result<()> {
+pub(crate) fn write_header(out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "{HEADER}")
 }
 
 /// Writes one row per ball.
-pub fn write_frame(out: &mut impl Write, frame: u32, balls: &[Ball]) -> io::Result<()> {
+pub(crate) fn write_frame(out: &mut impl Write, frame: u32, balls: &[Ball]) -> io::Result<()> {
     for (i, b) in balls.iter().enumerate() {
         let [x, y, vx, vy] = [b.x, b.y, b.vx, b.vy].map(number);
         writeln!(out, "{frame},{i},{x},{y},{vx},{vy}")?;
@@ -25,7 +25,7 @@ pub fn write_frame(out: &mut impl Write, frame: u32, balls: &[Ball]) -> io::Resu
 /// A number as every CSV of the program writes it: the shortest decimal that reads back to
 /// the same bits, in plain digits unless they would be long (Python's rule for `repr`: an
 /// exponent below 1e-4 and from 1e16 up), so `228.5`, `1.2e-15`, `1e300`.
-pub fn number(value: f64) -> String {
+pub(crate) fn number(value: f64) -> String {
     let size = value.abs();
     if size != 0.0 && size.is_finite() && !(1e-4..1e16).contains(&size) {
         format!("{value:e}")

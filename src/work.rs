@@ -37,13 +37,13 @@ thread_local! {
 
 /// Counts one unit of `work` on this thread (with the `work-tally` feature only).
 #[inline(always)]
-pub fn tally(work: Work) {
+pub(crate) fn tally(work: Work) {
     tally_many(work, 1);
 }
 
 /// Counts `units` of `work` on this thread at once (with the `work-tally` feature only).
 #[inline(always)]
-pub fn tally_many(work: Work, units: u64) {
+pub(crate) fn tally_many(work: Work, units: u64) {
     #[cfg(feature = "work-tally")]
     COUNTS.with(|counts| {
         let mut c = counts.get();

@@ -56,7 +56,7 @@ const GIF_BYTES_PER_CHANGED_FRAME: f64 = 30.0;
 
 /// What a run does, summed over its frames: what the costs above are paid for.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Activity {
+pub(crate) struct Activity {
     /// Frames in which anything changed (expected).
     pub changed_frames: f64,
     /// Frames drawn: those that changed (a run draws no other), or every frame (a sweep's
@@ -73,7 +73,7 @@ pub struct Activity {
 }
 
 impl Activity {
-    pub fn add(&mut self, other: Activity) {
+    pub(crate) fn add(&mut self, other: Activity) {
         self.changed_frames += other.changed_frames;
         self.drawn_frames += other.drawn_frames;
         self.awake_ball_frames += other.awake_ball_frames;
@@ -84,7 +84,7 @@ impl Activity {
 }
 
 /// A run's predicted time and GIF size.
-pub struct TimeAndSize {
+pub(crate) struct TimeAndSize {
     /// Time per frame, ns.
     pub frame_ns: f64,
     /// The whole run, seconds.
@@ -95,7 +95,7 @@ pub struct TimeAndSize {
 
 /// The physics alone of `scene` doing `activity` (stepping the awake balls, exact mode's
 /// events), ns: no drawing, no GIF.
-pub fn physics_ns(scene: &Scene, activity: &Activity) -> f64 {
+pub(crate) fn physics_ns(scene: &Scene, activity: &Activity) -> f64 {
     let steps = f64::from(scene.motion.substeps);
     let per_step = match scene.ball_collisions {
         Some(_) => NS_PER_COLLIDING_BALL_STEP,
@@ -109,7 +109,7 @@ pub fn physics_ns(scene: &Scene, activity: &Activity) -> f64 {
 }
 
 /// The time and GIF size of `scene` when its frames change as `activity` says.
-pub fn time_and_size(scene: &Scene, activity: &Activity) -> TimeAndSize {
+pub(crate) fn time_and_size(scene: &Scene, activity: &Activity) -> TimeAndSize {
     let n = scene.balls.len() as f64;
     let canvas = f64::from(scene.width) * f64::from(scene.height);
     let drawn: f64 = scene.balls.iter().map(|b| drawn_pixels(b, scene)).sum();
@@ -138,14 +138,14 @@ pub fn time_and_size(scene: &Scene, activity: &Activity) -> TimeAndSize {
 }
 
 /// The pixels a ball covers, without its trail (at most the canvas).
-pub fn disc_pixels(ball: &BallSpec, scene: &Scene) -> f64 {
+pub(crate) fn disc_pixels(ball: &BallSpec, scene: &Scene) -> f64 {
     let canvas = f64::from(scene.width) * f64::from(scene.height);
     (std::f64::consts::PI * ball.radius * ball.radius).min(canvas)
 }
 
 /// The pixels a ball and its trail cover when drawn: the ball, and its dots shrinking into
 /// the past (on average a third of its area each; a trail that does not shrink, all of it).
-pub fn drawn_pixels(ball: &BallSpec, scene: &Scene) -> f64 {
+pub(crate) fn drawn_pixels(ball: &BallSpec, scene: &Scene) -> f64 {
     let area = disc_pixels(ball, scene);
     let dots = ball.trail.saturating_sub(1) as f64;
     let dots = if scene.trail_shrink { dots / 3.0 } else { dots };

@@ -26,7 +26,7 @@ const QUEUED_BYTES_PER_PIXEL: f64 = 2.5;
 const STYLE_BYTES_PER_BALL: u64 = 24;
 
 /// The memory `scene` needs at most, bytes, and the part that dominates it, for the message.
-pub fn memory_of(scene: &Scene) -> (u64, &'static str) {
+pub(crate) fn memory_of(scene: &Scene) -> (u64, &'static str) {
     let pixels = u64::from(scene.width) * u64::from(scene.height);
     let per_ball = (size_of::<BallSpec>() + size_of::<Ball>()) as u64 + STYLE_BYTES_PER_BALL;
     // Each solver says what it keeps per ball.

@@ -31,18 +31,18 @@ use crate::physics::motion::CollisionMode;
 use crate::scene::Scene;
 
 /// The memory a run may be predicted to need unless told otherwise, bytes (2 GiB).
-pub const DEFAULT_MEMORY_BUDGET: u64 = 2 << 30;
+pub(crate) const DEFAULT_MEMORY_BUDGET: u64 = 2 << 30;
 /// The time a run may be predicted to take unless told otherwise, seconds (an hour).
-pub const DEFAULT_TIME_BUDGET: f64 = 3600.0;
+pub(crate) const DEFAULT_TIME_BUDGET: f64 = 3600.0;
 /// The GIF size a run may be predicted to write unless told otherwise, bytes (4 GiB).
-pub const DEFAULT_GIF_BUDGET: u64 = 4 << 30;
+pub(crate) const DEFAULT_GIF_BUDGET: u64 = 4 << 30;
 /// A run predicted to take longer than this draws a warning with its time and GIF size,
 /// seconds.
-pub const WARN_SECONDS: f64 = 5.0;
+pub(crate) const WARN_SECONDS: f64 = 5.0;
 /// A GIF predicted to be bigger than this draws a warning, bytes (1 GB).
-pub const WARN_GIF_BYTES: f64 = 1e9;
+pub(crate) const WARN_GIF_BYTES: f64 = 1e9;
 /// Browsers show a GIF frame delay under this as 100 ms, ms.
-pub const WARN_FRAME_MS: u32 = 20;
+pub(crate) const WARN_FRAME_MS: u32 = 20;
 
 /// A scene's predicted cost.
 #[derive(Clone, Debug, PartialEq)]
@@ -83,7 +83,7 @@ impl Default for Budget {
 impl Budget {
     /// Refuses `seconds` of predicted time if over the time budget: for a caller that adds up
     /// several runs' estimates (such as `physics_seconds` of each) into one total.
-    pub fn check_seconds(&self, seconds: f64) -> Result<(), OverBudget> {
+    pub(crate) fn check_seconds(&self, seconds: f64) -> Result<(), OverBudget> {
         if seconds > self.seconds {
             return Err(OverBudget::Time {
                 needed: seconds,
@@ -125,7 +125,7 @@ fn suggested_seconds(needed: f64) -> f64 {
 
 /// The predicted seconds of the physics alone of a whole run of a validated `scene`
 /// (stepping the balls, exact mode's events; no drawing, no GIF), from a pilot run.
-pub fn physics_seconds(scene: &Scene) -> f64 {
+pub(crate) fn physics_seconds(scene: &Scene) -> f64 {
     physics_ns(scene, &Activity::of(scene)) * 1e-9
 }
 
@@ -143,7 +143,7 @@ impl Estimate {
     /// under the warnings and the budget, that bound is the answer (short runs, where the
     /// pilot would cost as much as the run). Exact mode's events have no such bound, so
     /// with them the pilot always runs.
-    pub fn within(scene: &Scene, budget: &Budget) -> Result<Estimate, OverBudget> {
+    pub(crate) fn within(scene: &Scene, budget: &Budget) -> Result<Estimate, OverBudget> {
         let (memory, biggest) = memory_of(scene);
         if memory > budget.memory {
             return Err(OverBudget::Memory {
@@ -196,7 +196,7 @@ impl Estimate {
     }
 
     /// What about `scene` works but may surprise, one line each.
-    pub fn warnings(&self, scene: &Scene) -> Vec<String> {
+    pub(crate) fn warnings(&self, scene: &Scene) -> Vec<String> {
         let long = (self.seconds > WARN_SECONDS || self.gif_bytes > WARN_GIF_BYTES).then(|| {
             format!(
                 "this run looks to take about {} and write a GIF of about {} (Ctrl-C stops it and writes nothing)",
@@ -209,7 +209,7 @@ impl Estimate {
 }
 
 /// The warning for frames shown shorter than browsers show them, if `scene`'s are.
-pub fn frame_ms_warning(scene: &Scene) -> Option<String> {
+pub(crate) fn frame_ms_warning(scene: &Scene) -> Option<String> {
     (scene.frame_ms < WARN_FRAME_MS).then(|| {
         format!(
             "--frame-ms {}: browsers show frames shorter than {WARN_FRAME_MS} ms for 100 ms",
@@ -220,7 +220,7 @@ pub fn frame_ms_warning(scene: &Scene) -> Option<String> {
 
 /// The warning for work predicted to take `seconds`, if that is long (a comparison, whose
 /// GIF size is each method's business).
-pub fn long_work_warning(seconds: f64) -> Option<String> {
+pub(crate) fn long_work_warning(seconds: f64) -> Option<String> {
     (seconds > WARN_SECONDS).then(|| {
         format!(
             "this looks to take about {} (Ctrl-C stops it and writes nothing)",

@@ -27,7 +27,7 @@ impl Activity {
     /// The most the model can say for `scene`: every frame changed, all over the canvas, as
     /// much as all its balls and trails can. Exact mode's events are not bounded: this
     /// bound is only taken for runs too short for them to matter.
-    pub fn at_most(scene: &Scene) -> Activity {
+    pub(crate) fn at_most(scene: &Scene) -> Activity {
         let frames = f64::from(scene.frames);
         let canvas = f64::from(scene.width) * f64::from(scene.height);
         let drawn: f64 = scene.balls.iter().map(|b| drawn_pixels(b, scene)).sum();
@@ -43,7 +43,7 @@ impl Activity {
 
     /// What a whole run of `scene` does: the pilot's frames, then the rest as the pilot's
     /// last two quarters point (`rest_of`).
-    pub fn of(scene: &Scene) -> Activity {
+    pub(crate) fn of(scene: &Scene) -> Activity {
         let frames = pilot(scene);
         let quarter = frames.len().div_ceil(4);
         let (head, last) = frames.split_at(frames.len() - quarter);
@@ -69,7 +69,7 @@ impl Activity {
 
     /// A sweep panel's own activity: drawn whole and stepped in every frame, with the events
     /// its `pilot` (`Activity::of`) counted.
-    pub fn every_frame(scene: &Scene, pilot: &Activity) -> Activity {
+    pub(crate) fn every_frame(scene: &Scene, pilot: &Activity) -> Activity {
         let frames = f64::from(scene.frames);
         Activity {
             drawn_frames: frames,

@@ -10,7 +10,7 @@ impl Estimate {
     /// if over `budget`: every panel's physics and drawing, and one GIF of the whole canvas,
     /// whose changed rectangle spans the panels (taken as the whole canvas in every frame some
     /// panel changes). Memory is checked first, from the scenes alone.
-    pub fn of_tiles(
+    pub(crate) fn of_tiles(
         panels: &[&Scene],
         width: u32,
         height: u32,

@@ -19,7 +19,7 @@ use super::found::Trouble;
 use crate::render::dirty::Rect;
 
 /// A GIF's frames as stored, not yet decoded.
-pub struct Animation {
+pub(crate) struct Animation {
     pub width: u32,
     pub height: u32,
     global: Option<Vec<u8>>,
@@ -51,7 +51,7 @@ fn canvas_bytes(width: u32, height: u32) -> u64 {
 impl Animation {
     /// Reads every frame's header and compressed pixels; refuses a canvas over `memory_budget`
     /// bytes before reading any frame.
-    pub fn read(path: &Path, memory_budget: u64) -> Result<Animation, Trouble> {
+    pub(crate) fn read(path: &Path, memory_budget: u64) -> Result<Animation, Trouble> {
         let file = File::open(path).map_err(Trouble::Read)?;
         let mut options = gif::DecodeOptions::new();
         options.skip_frame_decoding(true);
@@ -95,12 +95,12 @@ impl Animation {
     }
 
     /// How long each stored frame shows, hundredths of a second.
-    pub fn delays(&self) -> impl Iterator<Item = u16> + '_ {
+    pub(crate) fn delays(&self) -> impl Iterator<Item = u16> + '_ {
         self.frames.iter().map(|frame| frame.delay_cs)
     }
 
     /// The stored frames, decoded one at a time and drawn as a viewer draws them.
-    pub fn pictures(&self) -> Pictures<'_> {
+    pub(crate) fn pictures(&self) -> Pictures<'_> {
         Pictures {
             animation: self,
             next: 0,
@@ -112,7 +112,7 @@ impl Animation {
 }
 
 /// The pictures of an [`Animation`], one per stored frame.
-pub struct Pictures<'a> {
+pub(crate) struct Pictures<'a> {
     animation: &'a Animation,
     next: usize,
     canvas: RgbImage,
@@ -125,12 +125,12 @@ pub struct Pictures<'a> {
 
 impl Pictures<'_> {
     /// The picture shown now.
-    pub fn canvas(&self) -> &RgbImage {
+    pub(crate) fn canvas(&self) -> &RgbImage {
         &self.canvas
     }
 
     /// Where the canvas may have changed since the last call (`None`: nowhere).
-    pub fn take_changed(&mut self) -> Option<Rect> {
+    pub(crate) fn take_changed(&mut self) -> Option<Rect> {
         self.changed.take()
     }
 
@@ -140,7 +140,7 @@ impl Pictures<'_> {
     }
 
     /// Draws the next stored frame onto the canvas (after the last, does nothing).
-    pub fn advance(&mut self) -> Result<(), Trouble> {
+    pub(crate) fn advance(&mut self) -> Result<(), Trouble> {
         let Some(frame) = self.animation.frames.get(self.next) else {
             return Ok(());
         };

@@ -14,7 +14,7 @@ use crate::scene::Scene;
 use super::pitfalls::Pitfall;
 
 /// The balls of a scene moving frame by frame, as the program moves them or with a mistake.
-pub enum ExpectedMotion {
+pub(crate) enum ExpectedMotion {
     Scene(Box<Simulation>),
     Mistaken {
         balls: Vec<Ball>,
@@ -27,7 +27,7 @@ pub enum ExpectedMotion {
 impl ExpectedMotion {
     /// The scene's motion with `pitfall` in it (`None`: the program's); `None` if the scene
     /// does not move by the lesson's step, which the pitfalls are mistakes in.
-    pub fn new(scene: &Scene, pitfall: Option<Pitfall>) -> Option<ExpectedMotion> {
+    pub(crate) fn new(scene: &Scene, pitfall: Option<Pitfall>) -> Option<ExpectedMotion> {
         let simulation = scene.simulation();
         let Some(pitfall) = pitfall else {
             return Some(ExpectedMotion::Scene(Box::new(simulation)));
@@ -42,7 +42,7 @@ impl ExpectedMotion {
     }
 
     /// One frame on.
-    pub fn step(&mut self) {
+    pub(crate) fn step(&mut self) {
         match self {
             ExpectedMotion::Scene(simulation) => simulation.step(),
             ExpectedMotion::Mistaken {
@@ -56,7 +56,7 @@ impl ExpectedMotion {
         }
     }
 
-    pub fn balls(&self) -> &[Ball] {
+    pub(crate) fn balls(&self) -> &[Ball] {
         match self {
             ExpectedMotion::Scene(simulation) => simulation.balls(),
             ExpectedMotion::Mistaken { balls, .. } => balls,
@@ -65,7 +65,7 @@ impl ExpectedMotion {
 }
 
 /// The expected frames, drawn one at a time.
-pub struct Frames<'a> {
+pub(crate) struct Frames<'a> {
     renderer: &'a Renderer,
     motion: ExpectedMotion,
     drawing: Drawing,
@@ -90,7 +90,11 @@ enum Drawing {
 impl<'a> Frames<'a> {
     /// The frames of `scene` with `pitfall` in it, as [`ExpectedMotion::new`] allows (and if a
     /// mistake's extra colours fit the palette).
-    pub fn new(scene: &Scene, renderer: &'a Renderer, pitfall: Option<Pitfall>) -> Option<Self> {
+    pub(crate) fn new(
+        scene: &Scene,
+        renderer: &'a Renderer,
+        pitfall: Option<Pitfall>,
+    ) -> Option<Self> {
         let mut palette = renderer.palette().clone();
         let drawing = match pitfall {
             None => Drawing::Redrawn(Box::new(Canvas::new(renderer))),
@@ -114,7 +118,7 @@ impl<'a> Frames<'a> {
 
     /// The next frame, the colours of its indices, and where it may differ from the frame
     /// before (`None`: nowhere).
-    pub fn next_frame(&mut self) -> (&IndexedFrame, &Palette, Option<Rect>) {
+    pub(crate) fn next_frame(&mut self) -> (&IndexedFrame, &Palette, Option<Rect>) {
         self.motion.step();
         let (renderer, balls) = (self.renderer, self.motion.balls());
         let (frame, changed) = match &mut self.drawing {

@@ -7,7 +7,7 @@ use image::RgbImage;
 
 /// Why a file cannot be graded, in one line each.
 #[derive(Debug, thiserror::Error)]
-pub enum Trouble {
+pub(crate) enum Trouble {
     #[error("cannot read it: {0}")]
     Read(std::io::Error),
     #[error("not an image or a trajectory: a GIF, a PNG, a folder of PNG frames, a --trace CSV or lines of x y vx vy")]
@@ -58,7 +58,12 @@ pub enum Trouble {
 
 impl Trouble {
     /// Refuses a `width` × `height` picture that `needs` more bytes to decode than `budget`.
-    pub fn over_budget(width: u32, height: u32, needs: u64, budget: u64) -> Result<(), Trouble> {
+    pub(crate) fn over_budget(
+        width: u32,
+        height: u32,
+        needs: u64,
+        budget: u64,
+    ) -> Result<(), Trouble> {
         if needs <= budget {
             return Ok(());
         }
@@ -73,14 +78,14 @@ impl Trouble {
 
 /// What comparing a file with the expected frames found: how many frames it holds (`None`
 /// for a still, which is the last) and where it first differs.
-pub struct Finding {
+pub(crate) struct Finding {
     pub frames: Option<u32>,
     pub first: Option<First>,
 }
 
 /// The first frame that differs, what differs in it and, for pictures, expected | theirs |
 /// difference side by side.
-pub struct First {
+pub(crate) struct First {
     pub frame: u32,
     pub what: String,
     pub picture: Option<RgbImage>,

@@ -5,22 +5,22 @@
 //! each of the lesson's named mistakes is simulated too, and the one it matches is named.
 //!
 //! - [`animation`]: a GIF read as a viewer shows it, within the memory budget.
-//! - [`pictures`]: the handed-in pictures frame by frame, against the expected ones.
-//! - [`pixels`]: whether two pictures match, within a tolerance; the picture of a difference.
-//! - [`trajectory`]: a `--trace` CSV or the lesson's `x y vx vy` lines, value by value.
-//! - [`expected`]: the scene's frames, or the scene with a mistake in it.
+//! - `pictures`: the handed-in pictures frame by frame, against the expected ones.
+//! - `pixels`: whether two pictures match, within a tolerance; the picture of a difference.
+//! - `trajectory`: a `--trace` CSV or the lesson's `x y vx vy` lines, value by value.
+//! - `expected`: the scene's frames, or the scene with a mistake in it.
 //! - [`pitfalls`]: the lesson's mistakes, shared with the starter example.
-//! - [`found`]: where a file first differs, or why it cannot be graded.
-//! - [`verdict`]: what is said about each file, as a line or as JSON.
+//! - `found`: where a file first differs, or why it cannot be graded.
+//! - `verdict`: what is said about each file, as a line or as JSON.
 
 pub mod animation;
-pub mod expected;
-pub mod found;
-pub mod pictures;
+pub(crate) mod expected;
+pub(crate) mod found;
+pub(crate) mod pictures;
 pub mod pitfalls;
-pub mod pixels;
-pub mod trajectory;
-pub mod verdict;
+pub(crate) mod pixels;
+pub(crate) mod trajectory;
+pub(crate) mod verdict;
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -34,7 +34,7 @@ use crate::render::write_rgb_png;
 use crate::scene::Scene;
 
 use expected::ExpectedMotion;
-pub use found::{Finding, First, Trouble};
+pub(crate) use found::{Finding, Trouble};
 use pictures::Theirs;
 use pitfalls::Pitfall;
 use pixels::Tolerance;

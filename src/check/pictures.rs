@@ -18,13 +18,13 @@ use crate::render::dirty::Rect;
 use crate::scene::Scene;
 
 /// What a learner handed in.
-pub enum Theirs {
+pub(crate) enum Theirs {
     Images(Images),
     Trajectory(TrajectoryFile),
 }
 
 /// Handed-in pictures.
-pub enum Images {
+pub(crate) enum Images {
     Gif(Animation),
     /// A PNG: the last frame.
     Still(RgbImage),
@@ -78,7 +78,7 @@ impl Theirs {
 impl Images {
     /// These pictures against `expected`, frame by frame until the first difference; with
     /// `want_picture`, the difference drawn.
-    pub fn compare(
+    pub(crate) fn compare(
         &self,
         scene: &Scene,
         memory_budget: u64,

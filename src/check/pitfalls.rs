@@ -20,7 +20,7 @@ pub enum Pitfall {
 }
 
 impl Pitfall {
-    pub const ALL: [Pitfall; 7] = [
+    pub(crate) const ALL: [Pitfall; 7] = [
         Pitfall::NothingMoves,
         Pitfall::NoClamp,
         Pitfall::GravityTwice,
@@ -31,7 +31,7 @@ impl Pitfall {
     ];
 
     /// Its name on the command line and in JSON (`tools/lesson.py gif --pitfall NAME`).
-    pub fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Pitfall::NothingMoves => "nothing-moves",
             Pitfall::NoClamp => "no-clamp",
@@ -70,12 +70,12 @@ impl Pitfall {
 
     /// Whether the mistake changes where the ball goes (else it shows only in pictures or
     /// in the trail).
-    pub fn shows_in_trajectory(self) -> bool {
+    pub(crate) fn shows_in_trajectory(self) -> bool {
         !matches!(self, Pitfall::TrailBeforeMove | Pitfall::TrailOverBall)
     }
 
     /// One step of the lesson ([`Ball::step`]) with this mistake in it.
-    pub fn step(self, ball: &mut Ball, gravity: f64, walls: &Walls) {
+    pub(crate) fn step(self, ball: &mut Ball, gravity: f64, walls: &Walls) {
         match self {
             Pitfall::NothingMoves => {
                 ball.record_trail();
@@ -123,7 +123,7 @@ impl Pitfall {
     }
 
     /// The pitfall whose step turns `before` into `after`, if one does (the first in
-    /// [`Pitfall::ALL`]).
+    /// `Pitfall::ALL`).
     pub fn of_step(before: &Ball, after: &Ball, gravity: f64, walls: &Walls) -> Option<Pitfall> {
         Pitfall::ALL.into_iter().find(|pitfall| {
             let mut ball = before.clone();

@@ -23,7 +23,7 @@ pub struct Tolerance {
 impl Tolerance {
     /// Whether `differing` pixels of `total` are few enough (with both limits given, the
     /// smaller counts, as in Playwright).
-    pub fn admits(&self, differing: u64, total: u64) -> bool {
+    pub(crate) fn admits(&self, differing: u64, total: u64) -> bool {
         let by_ratio = self.max_diff_pixel_ratio.map(|r| r * total as f64);
         let most = match (self.max_diff_pixels.map(|n| n as f64), by_ratio) {
             (Some(a), Some(b)) => a.min(b),
@@ -40,7 +40,7 @@ impl Tolerance {
 
 /// The pixels of a picture that differ from the expected one, and the box around them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Difference {
+pub(crate) struct Difference {
     pub pixels: u64,
     /// The first and last differing column and row.
     pub x: (u32, u32),
@@ -49,7 +49,7 @@ pub struct Difference {
 
 /// What differs between the `expected` frame (palette indices) and `theirs` within
 /// `region`, beyond the tolerance's colour distance; `None` if no pixel does.
-pub fn difference(
+pub(crate) fn difference(
     expected: &IndexedFrame,
     palette: &Palette,
     theirs: &RgbImage,
@@ -99,7 +99,7 @@ fn yiq([r, g, b]: [f64; 3]) -> [f64; 3] {
 
 /// Expected | theirs | difference, side by side: the difference is the expected frame faded
 /// towards white with the differing pixels in red, as pixelmatch draws it.
-pub fn diff_picture(
+pub(crate) fn diff_picture(
     expected: &IndexedFrame,
     palette: &Palette,
     theirs: &RgbImage,

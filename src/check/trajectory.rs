@@ -6,7 +6,7 @@ use super::found::{Finding, First, Trouble};
 use crate::trace::HEADER;
 
 /// Every row of a trajectory, frame by frame and ball by ball within a frame.
-pub struct TrajectoryFile {
+pub(crate) struct TrajectoryFile {
     rows: Vec<Row>,
     /// Whether it is the lesson's one-ball lines (no frame or ball numbers).
     plain: bool,
@@ -69,7 +69,7 @@ impl TrajectoryFile {
 
     /// This trajectory against `motion` over the scene's `frames`, each value within
     /// `tolerance` (px, px/frame).
-    pub fn compare(
+    pub(crate) fn compare(
         &self,
         motion: &mut ExpectedMotion,
         frames: u32,

@@ -21,11 +21,11 @@ pub enum Grade {
 
 impl Grade {
     /// 0 for a match, 1 for a difference, 2 for trouble, as `diff` and `cmp` exit.
-    pub fn exit_code(self) -> u8 {
+    pub(crate) fn exit_code(self) -> u8 {
         self as u8
     }
 
-    pub fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Grade::Match => "match",
             Grade::Differs => "differs",
@@ -51,7 +51,12 @@ pub struct Verdict {
 impl Verdict {
     /// The verdict of a finding: a match, where it first differs and the mistake it
     /// looks like, or (trouble) another number of frames, with how the shared ones compare.
-    pub fn of(path: &Path, scene: &Scene, finding: &Finding, pitfall: Option<Pitfall>) -> Verdict {
+    pub(crate) fn of(
+        path: &Path,
+        scene: &Scene,
+        finding: &Finding,
+        pitfall: Option<Pitfall>,
+    ) -> Verdict {
         let at = |frame: u32| seconds(scene, frame);
         let mut text = match &finding.first {
             None => match finding.frames {
@@ -99,7 +104,7 @@ impl Verdict {
     }
 
     /// The verdict on a file that cannot be graded.
-    pub fn trouble(path: &Path, trouble: &Trouble) -> Verdict {
+    pub(crate) fn trouble(path: &Path, trouble: &Trouble) -> Verdict {
         Verdict {
             path: path.to_path_buf(),
             grade: Grade::Trouble,
@@ -116,7 +121,7 @@ impl Verdict {
     }
 
     /// The verdict as a JSON object.
-    pub fn json(&self) -> Value {
+    pub(crate) fn json(&self) -> Value {
         json!({
             "file": self.path.display().to_string(),
             "verdict": self.grade.name(),
@@ -138,7 +143,7 @@ fn seconds(scene: &Scene, frame: u32) -> String {
 }
 
 /// After several files: how many match, differ and are in trouble.
-pub fn summary(verdicts: &[Verdict]) -> String {
+pub(crate) fn summary(verdicts: &[Verdict]) -> String {
     let count = |grade| verdicts.iter().filter(|v| v.grade == grade).count();
     format!(
         "{} files: {} match, {} differ, {} in trouble",

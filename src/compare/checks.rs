@@ -8,14 +8,14 @@ use crate::scene::Scene;
 use super::methods::Method;
 
 /// `1 ball, 200 frames`.
-pub fn balls_and_frames(scene: &Scene) -> String {
+pub(crate) fn balls_and_frames(scene: &Scene) -> String {
     let balls = scene.balls.len();
     let s = if balls == 1 { "" } else { "s" };
     format!("{balls} ball{s}, {} frames", scene.frames)
 }
 
 /// Refuses balls that left the finite numbers, so no NaN is measured or drawn.
-pub fn check_finite(
+pub(crate) fn check_finite(
     scene: &Scene,
     method: Method,
     balls: &[Ball],

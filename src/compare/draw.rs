@@ -17,7 +17,7 @@ use super::table::short;
 
 /// Each method's colour, in the order `--methods` lists them (the first is the lesson's ball
 /// colour): far apart in hue, and bright on the lesson's black.
-pub const COLOURS: [Rgb; MAX_METHODS] = [
+pub(crate) const COLOURS: [Rgb; MAX_METHODS] = [
     [255, 200, 60],
     [90, 200, 255],
     [255, 90, 90],
@@ -32,14 +32,14 @@ pub const COLOURS: [Rgb; MAX_METHODS] = [
 const GAP: u32 = 4;
 
 /// What the legend says of one method in one frame: its name and how far it has strayed.
-pub struct LegendRow {
+pub(crate) struct LegendRow {
     pub label: String,
     pub status: String,
 }
 
 impl LegendRow {
     /// The row of `method`, standing as `standing` so far.
-    pub fn new(method: Method, standing: Standing) -> LegendRow {
+    pub(crate) fn new(method: Method, standing: Standing) -> LegendRow {
         let status = match standing {
             Standing::Reference => "the reference".to_string(),
             Standing::Parted(frame) => format!("parted at frame {frame}"),
@@ -64,7 +64,12 @@ impl LegendRow {
 
 /// The longest texts a legend row of each of `methods` can show over `frames` frames against
 /// a reference trusted as `trust` (`chaotic` when the balls collide), for the picture's width.
-pub fn widest_rows(methods: &[Method], trust: Trust, chaotic: bool, frames: u32) -> Vec<String> {
+pub(crate) fn widest_rows(
+    methods: &[Method],
+    trust: Trust,
+    chaotic: bool,
+    frames: u32,
+) -> Vec<String> {
     let mut statuses = vec![
         Standing::Error(8888.88),
         Standing::Error(8.8e-88),
@@ -83,7 +88,7 @@ pub fn widest_rows(methods: &[Method], trust: Trust, chaotic: bool, frames: u32)
 
 /// The legend's last row: the reference, and up to which frame it is trusted if not to the
 /// end.
-pub fn reference_row(method: Method, trust: Trust, frames: u32) -> String {
+pub(crate) fn reference_row(method: Method, trust: Trust, frames: u32) -> String {
     if trust.horizon < frames {
         format!(
             "reference {method} (outlines), trusted up to frame {}",
@@ -95,7 +100,7 @@ pub fn reference_row(method: Method, trust: Trust, frames: u32) -> String {
 }
 
 /// Draws the comparison's frames.
-pub struct Picture {
+pub(crate) struct Picture {
     renderer: Renderer,
     /// The scene's part of the frame, as the renderer draws it.
     canvas: IndexedFrame,
@@ -168,7 +173,7 @@ fn text_left() -> i32 {
 impl Picture {
     /// A picture of `scene` with `methods` methods and a last legend row `reference`, wide
     /// enough for the widest legend row among `widest` (the longest texts a row can show).
-    pub fn new(
+    pub(crate) fn new(
         scene: &Scene,
         methods: usize,
         reference: String,
@@ -210,18 +215,18 @@ impl Picture {
     }
 
     /// The frame's size, px.
-    pub fn size(&self) -> (u32, u32) {
+    pub(crate) fn size(&self) -> (u32, u32) {
         self.frame.dimensions()
     }
 
     /// The frame last drawn.
-    pub fn frame(&self) -> &IndexedFrame {
+    pub(crate) fn frame(&self) -> &IndexedFrame {
         &self.frame
     }
 
     /// Draws one frame: each method's `balls` (in `--methods` order; the first on top), the reference's
     /// `centres` as outlines of the balls' radii, and the `legend`, one row per method.
-    pub fn draw(&mut self, methods: &[&[Ball]], centres: &[Vec2], legend: &[LegendRow]) {
+    pub(crate) fn draw(&mut self, methods: &[&[Ball]], centres: &[Vec2], legend: &[LegendRow]) {
         self.balls.clear();
         for balls in methods.iter().rev() {
             self.balls.extend(balls.iter().cloned());

@@ -3,7 +3,7 @@
 //!
 //! A comparison runs the physics of the scene many times: the reference's refinements, each
 //! method once to draw it, and each method again and again to time it. Each run is costed by
-//! [`physics_seconds`], the budget's prediction of a whole run from a pilot. Only the number of
+//! `physics_seconds`, the budget's prediction of a whole run from a pilot. Only the number of
 //! the reference's refinements cannot be known up front: it takes as many doublings as the
 //! scene needs to converge. A pilot finds out on the scene's first frames, and the whole run
 //! is assumed to need at least as many, and at least one doubling past the finest method,

@@ -26,7 +26,7 @@ const TIMING_BUDGET: Duration = Duration::from_millis(300);
 
 /// Nanoseconds per ball per frame: the median of the repetitions, and the fastest and slowest.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Timing {
+pub(crate) struct Timing {
     pub median: f64,
     pub min: f64,
     pub max: f64,
@@ -47,7 +47,7 @@ fn one_run(scene: &Scene) -> Duration {
 /// Times the physics of `scene` (no drawing; give it a scene without trails) solved by each
 /// of `methods`, in ns per ball-frame. The methods take turns, repetition by repetition, so a
 /// change in the machine's load falls on all of them alike.
-pub fn time_all(scene: &Scene, methods: &[Method]) -> Vec<Timing> {
+pub(crate) fn time_all(scene: &Scene, methods: &[Method]) -> Vec<Timing> {
     let scenes: Vec<Scene> = methods.iter().map(|m| m.on(scene)).collect();
     let ball_frames = scene.balls.len().max(1) as f64 * f64::from(scene.frames);
     // How many runs make one repetition, for each method, from one run; a run that long
@@ -94,7 +94,7 @@ pub fn time_all(scene: &Scene, methods: &[Method]) -> Vec<Timing> {
 /// each, then rounds in which every method runs for a repetition (at least `REPETITION`),
 /// as many rounds as fit in the timing budget, but at least enough for `MIN_REPETITIONS`
 /// and at most `MAX_REPETITIONS`.
-pub fn timing_seconds(runs: &[f64]) -> f64 {
+pub(crate) fn timing_seconds(runs: &[f64]) -> f64 {
     let repetition = REPETITION.as_secs_f64();
     let round: f64 = runs.iter().map(|&run| run.max(repetition)).sum();
     // A first run as long as a repetition is the first sample.
@@ -111,7 +111,7 @@ pub fn timing_seconds(runs: &[f64]) -> f64 {
 
 /// One method's results.
 #[derive(Clone, Debug)]
-pub struct Outcome {
+pub(crate) struct Outcome {
     pub method: Method,
     pub timing: Timing,
     pub stray: Stray,
@@ -123,19 +123,19 @@ pub struct Outcome {
 
 /// A scene's mechanical energy: kinetic `Σ ½·m·|v|²` plus potential `Σ m·g·h`, with the
 /// masses of collisions (m ∝ r²) and the plot's heights (how far each ball could still fall).
-pub struct Energy {
+pub(crate) struct Energy {
     heights: Recording,
 }
 
 impl Energy {
-    pub fn new(scene: &Scene) -> Energy {
+    pub(crate) fn new(scene: &Scene) -> Energy {
         Energy {
             heights: Recording::new(scene),
         }
     }
 
     /// The energy of `balls`, px⁴/frame² (mass in px²).
-    pub fn of(&self, balls: &[Ball]) -> f64 {
+    pub(crate) fn of(&self, balls: &[Ball]) -> f64 {
         let potential: f64 = balls
             .iter()
             .map(|b| mass(b.radius) * self.heights.potential(b))
@@ -146,7 +146,7 @@ impl Energy {
 
 /// Whether `scene` keeps its energy, so a method's drift is its own error: no drag, and every
 /// wall, floor and ball-ball collision elastic.
-pub fn conserves_energy(scene: &Scene) -> bool {
+pub(crate) fn conserves_energy(scene: &Scene) -> bool {
     scene.drag.is_none()
         && scene.walls.is_none_or(|damping| damping == 1.0)
         && scene.floors.iter().all(|floor| floor.damping == 1.0)
@@ -158,7 +158,7 @@ pub fn conserves_energy(scene: &Scene) -> bool {
 /// How far one method has strayed from the reference, frame by frame, in the frames before
 /// the reference's horizon (past it the reference no longer says where the balls are).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Stray {
+pub(crate) struct Stray {
     /// The largest distance of any ball from its reference so far, px.
     pub max_error: f64,
     /// The first frame in which some ball was more than its radius from its reference.
@@ -169,7 +169,7 @@ pub struct Stray {
 
 impl Stray {
     /// Nothing strayed yet, measured against a reference trusted up to `horizon`.
-    pub fn until(horizon: u32) -> Stray {
+    pub(crate) fn until(horizon: u32) -> Stray {
         Stray {
             max_error: 0.0,
             parted_at: None,
@@ -178,7 +178,7 @@ impl Stray {
     }
 
     /// Takes in frame `n`: the method's `balls` and the reference's `centres`.
-    pub fn frame(&mut self, n: u32, balls: &[Ball], centres: &[Vec2]) {
+    pub(crate) fn frame(&mut self, n: u32, balls: &[Ball], centres: &[Vec2]) {
         if n >= self.horizon {
             return;
         }
@@ -194,7 +194,7 @@ impl Stray {
 
 /// How far the reference can be trusted: what every method is judged by.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Trust {
+pub(crate) struct Trust {
     /// The largest uncertainty before the horizon, px: a smaller error says nothing.
     pub uncertainty: f64,
     /// The first frame the reference does not say where the balls are.
@@ -205,7 +205,7 @@ impl Trust {
     /// Whether the reference can tell how far a method is off over the first `seen` frames:
     /// not at all when it is trusted in no frame, and for colliding balls (`chaotic`) not
     /// past its horizon, where any error is as likely as any other.
-    pub fn tells(self, chaotic: bool, seen: u32) -> bool {
+    pub(crate) fn tells(self, chaotic: bool, seen: u32) -> bool {
         self.horizon > 0 && !(chaotic && self.horizon < seen)
     }
 }
@@ -213,14 +213,14 @@ impl Trust {
 /// What a row of the table is: a method judged against the reference, or the reference's
 /// own method, shown but not judged (it would agree with itself exactly).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Role {
+pub(crate) enum Role {
     Method,
     Reference,
 }
 
 impl Role {
     /// As the CSV writes it.
-    pub fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Role::Method => "method",
             Role::Reference => "reference",
@@ -230,7 +230,7 @@ impl Role {
 
 /// What can be said of a method against the reference.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Standing {
+pub(crate) enum Standing {
     /// It is the reference's own method: shown, not judged.
     Reference,
     /// Some ball was more than its radius off in this frame, before the horizon (colliding
@@ -249,7 +249,13 @@ pub enum Standing {
 impl Standing {
     /// The standing of a method of `role` that strayed as `stray`, after `seen` frames of a
     /// scene (`chaotic` when its balls collide), against a reference trusted as `trust`.
-    pub fn of(role: Role, stray: &Stray, trust: Trust, chaotic: bool, seen: u32) -> Standing {
+    pub(crate) fn of(
+        role: Role,
+        stray: &Stray,
+        trust: Trust,
+        chaotic: bool,
+        seen: u32,
+    ) -> Standing {
         if role == Role::Reference {
             return Standing::Reference;
         }
@@ -266,7 +272,7 @@ impl Standing {
     }
 
     /// Whether it is the reference's own method or a method judged against it.
-    pub fn role(self) -> Role {
+    pub(crate) fn role(self) -> Role {
         match self {
             Standing::Reference => Role::Reference,
             _ => Role::Method,

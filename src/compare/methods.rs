@@ -1,6 +1,6 @@
 //! The methods a comparison runs, as `--methods` spells them: `INTEGRATOR:SUBSTEPS:COLLISIONS`
 //! (`rk4:4:exact`), separated by commas. The names are the scene settings' own
-//! ([`crate::scene::names`]), so a method reads as the flags that would run it alone
+//! (`crate::scene::names`), so a method reads as the flags that would run it alone
 //! (`--integrator rk4 --substeps 4 --collisions exact`).
 
 use std::fmt;
@@ -14,14 +14,14 @@ use crate::scene::{Named, Scene};
 pub const DEFAULT_METHODS: &str = "semi-implicit-euler:1:clamp,velocity-verlet:1:exact,rk4:4:exact";
 
 /// The lesson's own method: the one a comparison marks.
-pub const LESSON: Method = Method {
+pub(crate) const LESSON: Method = Method {
     integrator: Integrator::SemiImplicitEuler,
     substeps: 1,
     collisions: CollisionMode::Clamp,
 };
 
 /// The most methods one comparison draws: each needs its own colour, and a legend row.
-pub const MAX_METHODS: usize = 8;
+pub(crate) const MAX_METHODS: usize = 8;
 
 /// One way to solve the scene: the three settings that decide how a frame is solved.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -33,7 +33,7 @@ pub struct Method {
 
 impl Method {
     /// `scene` solved by this method (its contact-solver iterations kept).
-    pub fn on(self, scene: &Scene) -> Scene {
+    pub(crate) fn on(self, scene: &Scene) -> Scene {
         Scene {
             motion: Motion {
                 integrator: self.integrator,
@@ -113,9 +113,9 @@ fn method(text: &str) -> Result<Method, String> {
 
 /// The methods of one comparison, as one value of `--methods` reads (a plain `Vec` field would
 /// make clap take the flag once per method).
-pub type MethodList = Vec<Method>;
+pub(crate) type MethodList = Vec<Method>;
 
-/// `--methods`: a comma-separated list of one to [`MAX_METHODS`] different methods.
+/// `--methods`: a comma-separated list of one to `MAX_METHODS` different methods.
 pub fn parse_list(text: &str) -> Result<MethodList, String> {
     if text.trim().is_empty() {
         return Err(format!(

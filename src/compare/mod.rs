@@ -2,27 +2,27 @@
 //! measured against a reference, so a learner sees on their own scene what accuracy costs.
 //!
 //! - [`methods`]: the methods, as `--methods` spells them (`rk4:4:exact`).
-//! - [`checks`]: what stops a comparison midway (a signal, numbers beyond the finite).
-//! - [`reference`](mod@reference): what every method is measured against, and how far it converged.
+//! - `checks`: what stops a comparison midway (a signal, numbers beyond the finite).
+//! - `reference`: what every method is measured against, and how far it converged.
 //! - [`estimate`]: how long the whole comparison will take, predicted before any work.
-//! - [`measure`]: the time per ball-frame, the error against the reference, the energy.
-//! - [`draw`]: the GIF's frames: every method in its colour, the reference as outlines, the
+//! - `measure`: the time per ball-frame, the error against the reference, the energy.
+//! - `draw`: the GIF's frames: every method in its colour, the reference as outlines, the
 //!   legend strip with each method's error so far.
-//! - [`table`]: the numbers on standard output, and as CSV (`--table`).
-//! - [`plot`]: the work-precision diagram (`--plot`): error against time, log-log.
+//! - `table`: the numbers on standard output, and as CSV (`--table`).
+//! - `plot`: the work-precision diagram (`--plot`): error against time, log-log.
 //!
 //! As [`crate::run`](mod@crate::run) does, it refuses everything it can before any work, writes every file
 //! beside its target and renames them into place only at the end. The GIF holds no timing,
 //! so it is the same bytes on every run; the table and the plot hold the timings.
 
-pub mod checks;
-pub mod draw;
+pub(crate) mod checks;
+pub(crate) mod draw;
 pub mod estimate;
-pub mod measure;
+pub(crate) mod measure;
 pub mod methods;
-pub mod plot;
-pub mod reference;
-pub mod table;
+pub(crate) mod plot;
+pub(crate) mod reference;
+pub(crate) mod table;
 
 use std::io::Write;
 
@@ -41,12 +41,11 @@ use reference::Reference;
 
 /// The most ball-frames a comparison takes on: it keeps the reference's every centre (and
 /// while converging, two runs of it), 16 bytes a ball-frame, so this bounds that to 128 MB.
-pub const MAX_BALL_FRAMES: u64 = 1 << 22;
+pub(crate) const MAX_BALL_FRAMES: u64 = 1 << 22;
 
 /// What a comparison found and wrote.
 #[derive(Clone, Debug)]
-pub struct Comparison {
-    pub outcomes: Vec<Outcome>,
+pub(crate) struct Comparison {
     /// The table as the terminal shows it.
     pub table: String,
     pub summary: Summary,
@@ -79,7 +78,11 @@ fn check_size(scene: &Scene) -> Result<(), InvalidValue> {
 /// Compares `methods` on `scene` and writes `job`'s outputs (the GIF, the still, the table
 /// as CSV, the work-precision plot); on any error no output file is left half-written and no
 /// existing file is changed.
-pub fn compare(scene: &Scene, methods: &[Method], job: &Job) -> Result<Comparison, RunError> {
+pub(crate) fn compare(
+    scene: &Scene,
+    methods: &[Method],
+    job: &Job,
+) -> Result<Comparison, RunError> {
     scene.validate()?;
     check_size(scene)?;
     // Each method's memory and GIF size; the time is the whole comparison's, checked next.
@@ -129,11 +132,7 @@ pub fn compare(scene: &Scene, methods: &[Method], job: &Job) -> Result<Compariso
     );
     write_table_and_plot(&files, &outcomes, chaotic, trust, plot_format, &title)?;
     let summary = job.commit(files, scene.frames)?;
-    Ok(Comparison {
-        outcomes,
-        table,
-        summary,
-    })
+    Ok(Comparison { table, summary })
 }
 
 /// `scene` without trails: what the reference and the timings run (trails are drawing).

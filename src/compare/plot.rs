@@ -211,7 +211,7 @@ fn draw_method<DB: DrawingBackend>(
 }
 
 /// Writes the diagram to `out` as `format`.
-pub fn write(
+pub(crate) fn write(
     out: impl Write,
     format: Format,
     outcomes: &[Outcome],

@@ -22,7 +22,7 @@ use crate::job::{Job, RunError};
 /// How closely two runs of the reference (RK4, exact collisions) with the second's substeps
 /// doubled must agree, px, at every ball in every frame, for the finer to be the reference: far
 /// below a pixel, and a thousand times below the error of the best method worth comparing.
-pub const REFERENCE_AGREEMENT: f64 = 1e-9;
+pub(crate) const REFERENCE_AGREEMENT: f64 = 1e-9;
 
 /// The most ball-steps one run of the reference may take, weighted by what a step costs
 /// (a ball-ball collision step counts as [`COLLIDING_STEP_WEIGHT`]): a second or two for one
@@ -36,7 +36,7 @@ const COLLIDING_STEP_WEIGHT: u64 = 13;
 
 /// Every ball's centre after every frame, frame by frame, and the balls after the last.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Trajectory {
+pub(crate) struct Trajectory {
     pub balls: usize,
     /// Frame `n`'s centres at `n * balls ..`.
     pub centres: Vec<Vec2>,
@@ -46,14 +46,14 @@ pub struct Trajectory {
 
 impl Trajectory {
     /// The centres after frame `n`.
-    pub fn frame(&self, n: usize) -> &[Vec2] {
+    pub(crate) fn frame(&self, n: usize) -> &[Vec2] {
         &self.centres[n * self.balls..(n + 1) * self.balls]
     }
 }
 
 /// The reference: which method it is, its path, and how far to trust it.
 #[derive(Clone, Debug)]
-pub struct Reference {
+pub(crate) struct Reference {
     pub method: Method,
     pub trajectory: Trajectory,
     /// At each frame, the reference's own uncertainty so far: the largest distance between
@@ -74,7 +74,7 @@ pub struct Reference {
 
 /// How the doubling ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Convergence {
+pub(crate) enum Convergence {
     /// Two runs in a row agreed to [`REFERENCE_AGREEMENT`].
     Converged,
     /// A doubling did not even halve the difference: the runs are not closing in on one
@@ -92,13 +92,13 @@ impl Reference {
     /// stop check and its progress bar). The substeps double until two runs agree (or stop closing in) and the
     /// reference has more substeps than every method, or until the next doubling would pass
     /// the limit.
-    pub fn of(scene: &Scene, methods: &[Method], job: &Job) -> Result<Reference, RunError> {
+    pub(crate) fn of(scene: &Scene, methods: &[Method], job: &Job) -> Result<Reference, RunError> {
         Reference::refined(scene, methods, most_substeps(scene), job)
     }
 
     /// [`Reference::of`] with at most `most` substeps (a power of two): the estimate runs it on
     /// the first frames of a scene, held to the whole scene's limit.
-    pub fn refined(
+    pub(crate) fn refined(
         scene: &Scene,
         methods: &[Method],
         most: u32,
@@ -149,7 +149,7 @@ impl Reference {
     /// The role of `method` in the table: the reference's own method is shown as the
     /// reference, since measured against itself it would show an error of 0, which says
     /// nothing.
-    pub fn role(&self, method: Method) -> Role {
+    pub(crate) fn role(&self, method: Method) -> Role {
         if method == self.method {
             Role::Reference
         } else {
@@ -159,7 +159,7 @@ impl Reference {
 
     /// How far it can be trusted over the first `seen` frames, as every method is judged by
     /// it (the table over the whole run, the legend frame by frame).
-    pub fn trust(&self, seen: u32) -> Trust {
+    pub(crate) fn trust(&self, seen: u32) -> Trust {
         Trust {
             uncertainty: self.largest_uncertainty(seen),
             horizon: self.horizon,
@@ -175,7 +175,7 @@ impl Reference {
 
     /// What the reference is and how far it is trusted, a line each: `rk4:8:exact: agrees
     /// with rk4:4:exact to 1.5e-12 px…`, then its uncertainty and horizon.
-    pub fn describe(&self) -> Vec<String> {
+    pub(crate) fn describe(&self) -> Vec<String> {
         let frames = self.uncertainty.len();
         let mut lines = vec![self.agreement()];
         if self.convergence == Convergence::Unchecked {
@@ -226,7 +226,7 @@ impl Reference {
 }
 
 /// RK4 with exact collisions and `substeps`: the reference's method.
-pub fn rk4(substeps: u32) -> Method {
+pub(crate) fn rk4(substeps: u32) -> Method {
     Method {
         integrator: Integrator::Rk4,
         substeps,
@@ -236,7 +236,7 @@ pub fn rk4(substeps: u32) -> Method {
 
 /// The most substeps a run of the reference on `scene` may take: the largest power of two
 /// within the substep and work limits (1 at least: there is always a first run).
-pub fn most_substeps(scene: &Scene) -> u32 {
+pub(crate) fn most_substeps(scene: &Scene) -> u32 {
     let within =
         |substeps| substeps <= MAX_SUBSTEPS && work(scene, substeps) <= MAX_REFERENCE_STEPS;
     let mut most = 1;

@@ -12,7 +12,7 @@ use super::measure::{Outcome, Standing, Trust};
 /// The CSV's columns; a value the scene makes meaningless is left empty (the position error
 /// of colliding balls, which part chaotically, or of the reference's own method; a parting
 /// that never happened). The last three were added later, so older readers still work.
-pub const CSV_HEADER: &str = "method,ns_per_ball_frame,ns_per_ball_frame_min,ns_per_ball_frame_max,max_position_error_px,parted_at_frame,energy_drift,role,reference_uncertainty_px,reference_horizon_frame";
+pub(crate) const CSV_HEADER: &str = "method,ns_per_ball_frame,ns_per_ball_frame_min,ns_per_ball_frame_max,max_position_error_px,parted_at_frame,energy_drift,role,reference_uncertainty_px,reference_horizon_frame";
 
 /// What the energy column means, for the line under the table.
 fn energy_meaning(conserves: bool) -> &'static str {
@@ -26,7 +26,7 @@ fn energy_meaning(conserves: bool) -> &'static str {
 }
 
 /// A number in a few characters: `12.34` from 0.01 to 10,000, else `1.2e-9`.
-pub fn short(value: f64) -> String {
+pub(crate) fn short(value: f64) -> String {
     if value == 0.0 || (0.01..10_000.0).contains(&value.abs()) {
         format!("{value:.2}")
     } else {
@@ -68,7 +68,7 @@ fn cells(outcome: &Outcome, chaotic: bool) -> [String; 4] {
 
 /// The table as the terminal shows it, every line ending in a newline: the `reference`'s
 /// lines, then a row per method, over `frames` frames.
-pub fn text(
+pub(crate) fn text(
     reference: &[String],
     outcomes: &[Outcome],
     chaotic: bool,
@@ -120,7 +120,7 @@ pub fn text(
 }
 
 /// The table as CSV: [`CSV_HEADER`], then a row per method.
-pub fn write_csv(
+pub(crate) fn write_csv(
     mut out: impl Write,
     outcomes: &[Outcome],
     chaotic: bool,

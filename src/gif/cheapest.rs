@@ -28,7 +28,7 @@ use super::transparency::{
 
 /// How a frame was encoded, for its header.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Encoding {
+pub(crate) struct Encoding {
     /// The index that means "unchanged, show what is beneath", if the encoding uses one.
     pub transparent: Option<u8>,
     /// Whether the rows are stored in interlaced order.
@@ -38,7 +38,7 @@ pub struct Encoding {
 /// One thread's tools for choosing and compressing, kept for the whole run so that no frame
 /// allocates once warmed up: the LZW coder and scratch buffers.
 #[derive(Default)]
-pub struct Coder {
+pub(crate) struct Coder {
     /// Made on the first frame, by the thread that codes (its 2 MB are written out then).
     lzw: Option<Lzw>,
     /// A marked layout's indices, in normal row order.
@@ -58,7 +58,7 @@ impl Coder {
     /// `table_len` colours, into `best` in as few bytes as the candidates allow. `beneath`
     /// is what the viewer shows under the rectangle (the same size), or `None` for the first
     /// frame, which has nothing to show through.
-    pub fn encode_cheapest(
+    pub(crate) fn encode_cheapest(
         &mut self,
         current: &[u8],
         width: usize,
@@ -264,12 +264,12 @@ impl Search<'_> {
 /// The small dictionary is tried only on a frame whose best coding held more codes than
 /// this, one and a half times its own size: on frames below it saved a few bytes at most
 /// (the lesson's 200 frames: 29 B of 119 kB) for a sixth of the encoder's time.
-pub const SMALL_DICTIONARY_FROM: u16 = 768;
+pub(crate) const SMALL_DICTIONARY_FROM: u16 = 768;
 
 /// The share of a frame's runs that marking must remove before the marked layout is coded:
 /// one in a hundred. Marking that removes fewer never won on a bundled scene (docs/gif.md),
 /// and coding it costs two more passes.
-pub const MIN_RUNS_SAVED: f64 = 0.01;
+pub(crate) const MIN_RUNS_SAVED: f64 = 0.01;
 
 /// Whether going from `before` runs to `after` removes at least [`MIN_RUNS_SAVED`] of them.
 fn saves_runs(before: usize, after: usize) -> bool {

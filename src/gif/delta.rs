@@ -84,7 +84,7 @@ fn last_difference(a: &[u8], b: &[u8]) -> Option<usize> {
 }
 
 /// Copies `rect` of `frame` into `out` (cleared first), row after row.
-pub fn crop(frame: &IndexedFrame, rect: Rect, out: &mut Vec<u8>) {
+pub(crate) fn crop(frame: &IndexedFrame, rect: Rect, out: &mut Vec<u8>) {
     out.clear();
     for span in rect.rows(frame.width()) {
         out.extend_from_slice(&frame.as_raw()[span]);

@@ -4,7 +4,7 @@
 //! only the scene's colours (padded to a power of two, as GIF requires). After the first
 //! frame, each frame is only the rectangle that changed ([`super::delta`]), laid over the
 //! last one (disposal Keep), written in whichever of a few encodings is smallest
-//! ([`super::cheapest`]). A frame identical to the one before is not written at all: the one
+//! (`super::cheapest`). A frame identical to the one before is not written at all: the one
 //! before is shown that much longer (its delay grows), as `gifsicle -O` does. A renderer that
 //! knows what it drew again says so ([`crate::render::Damage`]): only there are pixels
 //! compared, and a frame it did not draw again is not compared at all.
@@ -385,7 +385,7 @@ impl<W: Write> GifWriter<W> {
 
     /// Sends every frame queued so far to be encoded, without waiting for it (only for the
     /// batch before it, if any), so the caller can do other work in the meantime.
-    pub fn send_queued(&mut self) -> io::Result<()> {
+    pub(crate) fn send_queued(&mut self) -> io::Result<()> {
         if self.filling.queued > 0 {
             self.hand_over()?;
         }
@@ -399,7 +399,7 @@ impl<W: Write> GifWriter<W> {
     }
 
     /// How many frames the GIF holds so far (repeats are merged into the frame before them).
-    pub fn pictures(&self) -> u32 {
+    pub(crate) fn pictures(&self) -> u32 {
         self.pictures
     }
 

@@ -4,10 +4,10 @@
 //! - [`transparency`]: unchanged pixels marked transparent, two ways.
 //! - [`interlace`]: GIF's interlaced row order, another order for LZW to read.
 //! - [`lzw`]: GIF's LZW compression, one coder per thread.
-//! - [`cheapest`]: each frame's smallest encoding among a few candidates.
+//! - `cheapest`: each frame's smallest encoding among a few candidates.
 //! - [`encoder`]: frames queued in a bounded batch, compressed in parallel, written in order.
 
-pub mod cheapest;
+pub(crate) mod cheapest;
 pub mod delta;
 pub mod encoder;
 pub mod interlace;

@@ -48,7 +48,12 @@ pub fn mark_mixed_stretches(
 /// Writes `current` into `out` (cleared first) with every unchanged pixel set to
 /// `transparent`: the better marking when what stays the same is more varied than what
 /// changes (a heap of resting balls round a few moving ones). Returns how many it marked.
-pub fn mark_unchanged(current: &[u8], beneath: &[u8], transparent: u8, out: &mut Vec<u8>) -> usize {
+pub(crate) fn mark_unchanged(
+    current: &[u8],
+    beneath: &[u8],
+    transparent: u8,
+    out: &mut Vec<u8>,
+) -> usize {
     out.clear();
     let mut marked = 0;
     out.extend(current.iter().zip(beneath).map(|(&now, &before)| {
@@ -65,7 +70,7 @@ pub fn mark_unchanged(current: &[u8], beneath: &[u8], transparent: u8, out: &mut
 /// How many neighbouring pairs of pixels (in reading order) are both unchanged and of two
 /// colours: marking removes at most this many runs, so it is the cheap test of whether
 /// marking can pay at all (on the lesson it never can).
-pub fn mixed_neighbours(current: &[u8], beneath: &[u8]) -> usize {
+pub(crate) fn mixed_neighbours(current: &[u8], beneath: &[u8]) -> usize {
     count_neighbours(current, beneath, |[now, next, under_now, under_next]| {
         (now == under_now) & (next == under_next) & (now != next)
     })
@@ -74,7 +79,11 @@ pub fn mixed_neighbours(current: &[u8], beneath: &[u8]) -> usize {
 /// How many neighbouring pixels `i`, `i + 1` (in reading order) make `pair` true, given
 /// `[current[i], current[i + 1], beneath[i], beneath[i + 1]]`. Counted in blocks of 255
 /// pairs, so each block's sum fits a byte and the compiler counts many pairs per instruction.
-pub fn count_neighbours(current: &[u8], beneath: &[u8], pair: impl Fn([u8; 4]) -> bool) -> usize {
+pub(crate) fn count_neighbours(
+    current: &[u8],
+    beneath: &[u8],
+    pair: impl Fn([u8; 4]) -> bool,
+) -> usize {
     let len = current.len().min(beneath.len()).saturating_sub(1);
     let (now, next) = (current[..len].chunks(255), current[1..=len].chunks(255));
     let (under_now, under_next) = (beneath[..len].chunks(255), beneath[1..=len].chunks(255));

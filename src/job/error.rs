@@ -39,7 +39,7 @@ pub enum RunError {
 impl RunError {
     /// 2 for input the program cannot use, 1 for a file it cannot write, 128 + the signal's
     /// number for a job stopped by one.
-    pub fn exit_code(&self) -> u8 {
+    pub(crate) fn exit_code(&self) -> u8 {
         match self {
             RunError::Invalid(_)
             | RunError::Colours(_)
@@ -53,7 +53,7 @@ impl RunError {
 
     /// `NonFinite` for the first ball that left the finite numbers in `frame`, so no NaN is
     /// traced, measured, drawn or written; `inputs` says what that ball (by index) came from.
-    pub fn if_not_finite(
+    pub(crate) fn if_not_finite(
         balls: &[Ball],
         frame: u32,
         inputs: impl FnOnce(usize) -> String,

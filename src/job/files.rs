@@ -16,10 +16,10 @@ use crate::render::Damage;
 use super::outputs::{OutputKind, Target};
 
 /// Where an output's bytes go while the job runs.
-pub type Writer = BufWriter<Box<dyn Write>>;
+pub(crate) type Writer = BufWriter<Box<dyn Write>>;
 
 /// Every output of a job, open from before the first frame until they go into place.
-pub struct Files {
+pub(crate) struct Files {
     open: Vec<Open>,
     /// How many frames the finished GIF holds, once it is finished.
     pictures: Cell<Option<u32>>,
@@ -55,7 +55,7 @@ impl Files {
 
     /// A writer onto the output of `kind`, if the job has one: a second handle on its
     /// temporary file (so writing it borrows nothing), or standard output.
-    pub fn writer(&self, kind: OutputKind) -> Result<Option<Writer>, OutputError> {
+    pub(crate) fn writer(&self, kind: OutputKind) -> Result<Option<Writer>, OutputError> {
         let Some(open) = self.open.iter().find(|o| o.kind == kind) else {
             return Ok(None);
         };
@@ -67,7 +67,7 @@ impl Files {
     }
 
     /// Ties an I/O failure to the output of `kind`.
-    pub fn error_at(&self, kind: OutputKind) -> impl Fn(io::Error) -> OutputError + '_ {
+    pub(crate) fn error_at(&self, kind: OutputKind) -> impl Fn(io::Error) -> OutputError + '_ {
         OutputError::at(self.path(kind))
     }
 
@@ -79,7 +79,7 @@ impl Files {
 
     /// Starts the GIF (its header and colour table), `width` × `height` px, each frame shown
     /// for `frame_ms`.
-    pub fn start_gif(
+    pub(crate) fn start_gif(
         &self,
         (width, height): (u32, u32),
         palette: &Palette,
@@ -100,7 +100,7 @@ impl Files {
     /// Ends the pictures: the GIF's last frames are encoded while `still` is written as the
     /// PNG (if the job writes one), then the GIF is ended. Every byte is written, though no
     /// file is in place yet.
-    pub fn finish_pictures(
+    pub(crate) fn finish_pictures(
         &self,
         mut gif: Gif,
         still: &IndexedFrame,
@@ -145,7 +145,7 @@ impl Files {
 
 /// The GIF as it is streamed, frame by frame; a job that writes no GIF takes its frames and
 /// does nothing with them.
-pub struct Gif {
+pub(crate) struct Gif {
     writer: Option<GifWriter<Writer>>,
     /// Where it goes, for messages.
     path: PathBuf,
@@ -153,12 +153,12 @@ pub struct Gif {
 
 impl Gif {
     /// Queues one whole frame.
-    pub fn write_frame(&mut self, frame: &IndexedFrame) -> Result<(), OutputError> {
+    pub(crate) fn write_frame(&mut self, frame: &IndexedFrame) -> Result<(), OutputError> {
         self.write_changes(frame, Damage::Whole)
     }
 
     /// Queues one frame that differs from the last only as `damage` says.
-    pub fn write_changes(
+    pub(crate) fn write_changes(
         &mut self,
         frame: &IndexedFrame,
         damage: Damage,

@@ -3,22 +3,22 @@
 //! and holds where the scene came from, the budget, the stop flag, whether to talk on stderr (warnings
 //! and a progress bar) and the list of outputs. A command uses it in this order:
 //!
-//! 1. [`Job::check`] before any work, then [`Job::open`]: every output path is checked, each
+//! 1. [`Job::check`] before any work, then `Job::open`: every output path is checked, each
 //!    file is opened beside its target, and the warnings are printed;
-//! 2. [`Job::stop_if_asked`] once a frame, and a [`Job::progress`] bar over the frames;
-//! 3. [`Files::finish_pictures`]: the GIF's last frames, the still PNG, the GIF's end;
-//! 4. [`Job::commit`]: every file into place together, and the [`Summary`] of what was
+//! 2. `Job::stop_if_asked` once a frame, and a `Job::progress` bar over the frames;
+//! 3. `Files::finish_pictures`: the GIF's last frames, the still PNG, the GIF's end;
+//! 4. `Job::commit`: every file into place together, and the [`Summary`] of what was
 //!    written.
 //!
 //! The commands are peers above it: none imports another.
 //!
-//! - [`outputs`]: what each output is ([`OutputKind`]) and where it goes ([`Target`]).
-//! - [`files`]: the open outputs, written beside their targets and committed together.
-//! - [`error`]: why a job wrote nothing ([`RunError`]), with its exit code.
+//! - `outputs`: what each output is ([`OutputKind`]) and where it goes ([`Target`]).
+//! - `files`: the open outputs, written beside their targets and committed together.
+//! - `error`: why a job wrote nothing ([`RunError`]), with its exit code.
 
-pub mod error;
-pub mod files;
-pub mod outputs;
+pub(crate) mod error;
+pub(crate) mod files;
+pub(crate) mod outputs;
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -29,7 +29,7 @@ use crate::progress::Progress;
 use crate::stop::Stop;
 
 pub use error::RunError;
-pub use files::Files;
+pub(crate) use files::Files;
 pub use outputs::{OutputKind, Target};
 
 /// One command's run: its outputs and the limits it runs within.
@@ -83,7 +83,7 @@ impl Job {
     }
 
     /// The job, talking on stderr: warnings, and a progress bar once it looks long.
-    pub fn talking(self) -> Job {
+    pub(crate) fn talking(self) -> Job {
         Job {
             talk: true,
             progress: Progress::new(true),
@@ -99,7 +99,7 @@ impl Job {
     }
 
     /// The job with one more output.
-    pub fn with(mut self, kind: OutputKind, path: impl Into<PathBuf>) -> Job {
+    pub(crate) fn with(mut self, kind: OutputKind, path: impl Into<PathBuf>) -> Job {
         self.outputs.push(Target {
             kind,
             path: path.into(),
@@ -108,7 +108,7 @@ impl Job {
     }
 
     /// The job with one more output if `path` is given (a flag the user may leave out).
-    pub fn with_optional(self, kind: OutputKind, path: Option<&PathBuf>) -> Job {
+    pub(crate) fn with_optional(self, kind: OutputKind, path: Option<&PathBuf>) -> Job {
         match path {
             Some(path) => self.with(kind, path),
             None => self,
@@ -122,12 +122,12 @@ impl Job {
     }
 
     /// Whether some output goes to standard output (then the summary goes to stderr).
-    pub fn writes_to_stdout(&self) -> bool {
+    pub(crate) fn writes_to_stdout(&self) -> bool {
         self.outputs.iter().any(|t| output::is_stdout(&t.path))
     }
 
     /// Refuses an output path no output should take: a folder, a device, the scene file, a
-    /// path another output names too. [`Job::open`] checks first too; a command calls this
+    /// path another output names too. `Job::open` checks first too; a command calls this
     /// before any work of its own, so a wrong path is the first thing it says.
     pub fn check(&self) -> Result<(), RunError> {
         let list: Vec<_> = self.outputs.iter().map(Target::output).collect();
@@ -136,7 +136,7 @@ impl Job {
 
     /// Checks every output path, opens each output beside its target and prints `warnings`
     /// (unless silent).
-    pub fn open(&self, warnings: &[String]) -> Result<Files, RunError> {
+    pub(crate) fn open(&self, warnings: &[String]) -> Result<Files, RunError> {
         self.check()?;
         let files = Files::create(&self.outputs)?;
         // Only once nothing more can be refused, so a refusal stays a single line.
@@ -149,7 +149,7 @@ impl Job {
     }
 
     /// `Stopped` at `frame` of `frames` if a signal has come.
-    pub fn stop_if_asked(&self, frame: u32, frames: u32) -> Result<(), RunError> {
+    pub(crate) fn stop_if_asked(&self, frame: u32, frames: u32) -> Result<(), RunError> {
         match self.stop.requested() {
             Some(signal) => Err(RunError::Stopped {
                 signal,
@@ -162,13 +162,13 @@ impl Job {
     }
 
     /// The progress bar over the job's frames (shown only if the job talks and looks long).
-    pub fn progress(&self) -> &Progress {
+    pub(crate) fn progress(&self) -> &Progress {
         &self.progress
     }
 
     /// Puts every file in place once a last look finds no signal, and says what was written:
     /// `frames` frames, and every file with its size.
-    pub fn commit(&self, files: Files, frames: u32) -> Result<Summary, RunError> {
+    pub(crate) fn commit(&self, files: Files, frames: u32) -> Result<Summary, RunError> {
         // The last moment a signal stops the job; from here on the files go into place.
         self.stop_if_asked(frames, frames)?;
         let pictures = files.pictures();

@@ -20,7 +20,7 @@ pub enum OutputKind {
 
 impl OutputKind {
     /// The flag that names this output.
-    pub fn flag(self) -> &'static str {
+    pub(crate) fn flag(self) -> &'static str {
         match self {
             OutputKind::Gif => "--gif",
             OutputKind::Png => "--png",
@@ -41,7 +41,7 @@ pub struct Target {
 
 impl Target {
     /// This output as [`crate::output::check`] judges it.
-    pub fn output(&self) -> Output<'_> {
+    pub(crate) fn output(&self) -> Output<'_> {
         let (flag, path) = (self.kind.flag(), self.path.as_path());
         match self.kind {
             OutputKind::Gif => Output::picture(flag, path, "gif"),

@@ -54,7 +54,7 @@ impl Ball {
     /// means the ball ends the frame touching the wall, never inside it, so the next frame
     /// cannot flip it back (the jitter bug). `else if` keeps both walls of an axis from
     /// triggering in one frame, as in the lesson's hint.
-    pub fn bounce_off_walls(&mut self, walls: &Walls) {
+    pub(crate) fn bounce_off_walls(&mut self, walls: &Walls) {
         if self.x - self.radius < 0.0 {
             self.x = self.radius;
             self.vx = -self.vx * walls.damping;
@@ -74,7 +74,7 @@ impl Ball {
     /// Puts a ball that something other than its own motion pushed out of the box (a
     /// neighbour, in a ball-ball collision) back inside, without touching its velocity: it
     /// did not hit the wall, it was shoved.
-    pub fn keep_inside(&mut self, walls: &Walls) {
+    pub(crate) fn keep_inside(&mut self, walls: &Walls) {
         self.x = self.x.clamp(self.radius, walls.width - self.radius);
         self.y = self.y.clamp(self.radius, walls.height - self.radius);
     }
@@ -90,7 +90,7 @@ impl Ball {
     }
 
     /// Whether position and velocity are all finite numbers (a run stops if not).
-    pub fn is_finite(&self) -> bool {
+    pub(crate) fn is_finite(&self) -> bool {
         [self.x, self.y, self.vx, self.vy]
             .iter()
             .all(|v| v.is_finite())
@@ -137,7 +137,7 @@ impl Trail {
 
     /// The memory a trail of `capacity` points takes besides the ball once full, bytes: its
     /// ring and the ring's buffer (a power of two above `capacity`).
-    pub fn heap_bytes(capacity: usize) -> u64 {
+    pub(crate) fn heap_bytes(capacity: usize) -> u64 {
         if capacity == 0 {
             return 0;
         }
@@ -146,7 +146,7 @@ impl Trail {
     }
 
     /// Whether it keeps any points at all (its capacity is not 0).
-    pub fn keeps_points(&self) -> bool {
+    pub(crate) fn keeps_points(&self) -> bool {
         self.ring.is_some()
     }
 
@@ -183,11 +183,11 @@ impl Trail {
 
 /// The mass of a ball of `radius` px: balls are flat discs of one density, so mass grows as
 /// the radius squared (the unit cancels in every collision, so none is named).
-pub fn mass(radius: f64) -> f64 {
+pub(crate) fn mass(radius: f64) -> f64 {
     radius * radius
 }
 
-/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' [`mass`] (flat discs of equal density):
+/// Total kinetic energy, `Σ ½·m·|v|²` with the balls' `mass` (flat discs of equal density):
 /// it never rises in a collision with restitution ≤ 1 (the tests and the soak run check it).
 pub fn kinetic_energy(balls: &[Ball]) -> f64 {
     balls

@@ -23,7 +23,7 @@ impl Effects {
     /// The lesson's collision response: clamp-then-reflect against the box, then against
     /// every floor (swept from `from`), then the box again in case a floor pushed the ball
     /// out. Box first, so a fast ball cannot slip round a floor's end through the wall.
-    pub fn clamp_and_reflect(&self, ball: &mut Ball, from: Vec2) {
+    pub(crate) fn clamp_and_reflect(&self, ball: &mut Ball, from: Vec2) {
         self.bounce_off_walls(ball);
         if !self.floors.is_empty() {
             for floor in &self.floors {

@@ -16,19 +16,19 @@ pub struct Floor {
 
 impl Floor {
     /// The end points `from` and `to`.
-    pub fn ends(&self) -> [Vec2; 2] {
+    pub(crate) fn ends(&self) -> [Vec2; 2] {
         [self.from, self.to]
     }
 
     /// The unit normal (left of `from → to`); which side a ball is on is the sign along it.
-    pub fn normal(&self) -> Vec2 {
+    pub(crate) fn normal(&self) -> Vec2 {
         let [from, to] = self.ends();
         let d = to - from;
         -d.perp() / d.length()
     }
 
     /// Where along the segment the point's projection falls: 0 at `from`, 1 at `to`.
-    pub fn along(&self, point: Vec2) -> f64 {
+    pub(crate) fn along(&self, point: Vec2) -> f64 {
         let [from, to] = self.ends();
         let d = to - from;
         (point - from).dot(d) / d.length_squared()
@@ -37,7 +37,7 @@ impl Floor {
     /// The unit normal from the segment towards `centre` and how far the centre is from the
     /// segment (its nearest point, which may be an end). A centre on the segment gets the
     /// face's normal. The contact solver builds its floor contacts from this.
-    pub fn nearest(&self, centre: Vec2) -> (Vec2, f64) {
+    pub(crate) fn nearest(&self, centre: Vec2) -> (Vec2, f64) {
         let t = self.along(centre).clamp(0.0, 1.0);
         let [from, to] = self.ends();
         let point = from + t * (to - from);
@@ -56,7 +56,7 @@ impl Floor {
     /// Swept: if the ball's path crossed the segment's face (even moving many diameters per
     /// frame), it is put back on the side it came from. Otherwise a ball overlapping an end
     /// point bounces off it as off a point.
-    pub fn bounce(&self, ball: &mut Ball, from: Vec2) {
+    pub(crate) fn bounce(&self, ball: &mut Ball, from: Vec2) {
         let (now, start, normal) = (ball.position(), self.from, self.normal());
         let before = (from - start).dot(normal);
         let after = (now - start).dot(normal);

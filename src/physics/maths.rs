@@ -17,12 +17,12 @@ pub fn hypot(x: f64, y: f64) -> f64 {
 }
 
 /// Sine of an angle in radians.
-pub fn sin(angle: f64) -> f64 {
+pub(crate) fn sin(angle: f64) -> f64 {
     libm::sin(angle)
 }
 
 /// Cosine of an angle in radians.
-pub fn cos(angle: f64) -> f64 {
+pub(crate) fn cos(angle: f64) -> f64 {
     libm::cos(angle)
 }
 
@@ -42,12 +42,12 @@ pub fn ln(x: f64) -> f64 {
 }
 
 /// Base-10 logarithm.
-pub fn log10(x: f64) -> f64 {
+pub(crate) fn log10(x: f64) -> f64 {
     libm::log10(x)
 }
 
 /// `baseᵉˣᵖ` for a real exponent.
-pub fn powf(base: f64, exponent: f64) -> f64 {
+pub(crate) fn powf(base: f64, exponent: f64) -> f64 {
     libm::pow(base, exponent)
 }
 

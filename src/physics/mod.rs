@@ -16,7 +16,7 @@
 //! - [`integrate`]: other integrators, substeps, bouncing at the exact time of impact.
 //! - [`contacts`]: ball-ball collisions in clamp mode: the grid and the contact solver that
 //!   lets piles rest.
-//! - [`events`]: ball-ball collisions in exact mode, event by event.
+//! - `events`: ball-ball collisions in exact mode, event by event.
 //!
 //! Shared by all: [`vec2`] (the 2-D vector), [`maths`] (transcendental functions, the same
 //! bits on every system), [`tolerances`] (every tolerance with its unit and reason). The work
@@ -25,7 +25,7 @@
 pub mod ball;
 pub mod contacts;
 pub mod effects;
-pub mod events;
+pub(crate) mod events;
 pub mod floor;
 pub mod integrate;
 pub mod maths;

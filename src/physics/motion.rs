@@ -57,14 +57,14 @@ impl Motion {
 
     /// How many steps a frame takes (the substeps, or more where strong drag needs them) and
     /// the forces of one step. The same for every ball, so worked out once per frame.
-    pub fn plan(&self, effects: &Effects) -> (u32, Forces) {
+    pub(crate) fn plan(&self, effects: &Effects) -> (u32, Forces) {
         let frame = Forces::new(effects);
         let steps = self.integrator.steps_per_frame(self.substeps, &frame);
         (steps, frame.split(steps))
     }
 
     /// One step of `forces.dt` frames: integrate, then resolve walls and floors.
-    pub fn step(&self, ball: &mut Ball, effects: &Effects, forces: &Forces) {
+    pub(crate) fn step(&self, ball: &mut Ball, effects: &Effects, forces: &Forces) {
         match self.collisions {
             CollisionMode::Exact => {
                 // Whether the step hit the cap is not reported on this path (one ball, no

@@ -124,7 +124,7 @@ impl Simulation {
 
     /// The lesson's gravity and walls, if every ball moves by the lesson's own step
     /// ([`Ball::step`]): then a variant of that step (a learner's mistake) can move them too.
-    pub fn lesson_step(&self) -> Option<(f64, Walls)> {
+    pub(crate) fn lesson_step(&self) -> Option<(f64, Walls)> {
         match &self.stepper {
             Stepper::Lesson { gravity, walls } => Some((*gravity, *walls)),
             _ => None,

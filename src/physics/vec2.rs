@@ -24,7 +24,7 @@ impl Vec2 {
     }
 
     /// `x·x' + y·y'`.
-    pub fn dot(self, other: Vec2) -> f64 {
+    pub(crate) fn dot(self, other: Vec2) -> f64 {
         self.x * other.x + self.y * other.y
     }
 
@@ -39,19 +39,19 @@ impl Vec2 {
     }
 
     /// The vector turned a quarter turn: `(−y, x)`.
-    pub fn perp(self) -> Vec2 {
+    pub(crate) fn perp(self) -> Vec2 {
         Vec2::new(-self.y, self.x)
     }
 
     /// The component along `axis`: `x` for 0, `y` for 1, for code that works one axis at a
     /// time.
-    pub fn axis(self, axis: usize) -> f64 {
+    pub(crate) fn axis(self, axis: usize) -> f64 {
         self.to_array()[axis]
     }
 
     /// The vector with `along` on `axis` (0 for `x`, 1 for `y`) and `across` on the other:
     /// [`Vec2::axis`] the other way round.
-    pub fn from_axes(axis: usize, along: f64, across: f64) -> Vec2 {
+    pub(crate) fn from_axes(axis: usize, along: f64, across: f64) -> Vec2 {
         match axis {
             0 => Vec2::new(along, across),
             _ => Vec2::new(across, along),
@@ -59,7 +59,7 @@ impl Vec2 {
     }
 
     /// As an array `[x, y]`, for code that indexes by axis.
-    pub fn to_array(self) -> [f64; 2] {
+    pub(crate) fn to_array(self) -> [f64; 2] {
         [self.x, self.y]
     }
 }

@@ -53,7 +53,7 @@ fn title_lines(parts: &[String]) -> Vec<String> {
 }
 
 /// The picture's size for `recording` under a title made of `title` parts, px.
-pub fn size(recording: &Recording, title: &[String]) -> (u32, u32) {
+pub(crate) fn size(recording: &Recording, title: &[String]) -> (u32, u32) {
     let panels = panels(recording).len() as u32;
     let title_lines = title_lines(title).len() as u32;
     (
@@ -63,7 +63,7 @@ pub fn size(recording: &Recording, title: &[String]) -> (u32, u32) {
 }
 
 /// Draws `recording` on `root`, under a title made of `title` parts.
-pub fn draw<DB: DrawingBackend>(
+pub(crate) fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     recording: &Recording,
     title: &[String],

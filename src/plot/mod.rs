@@ -7,9 +7,9 @@
 //! settings; nothing in physics, scene, render or gif imports it.
 //!
 //! - [`record`]: the numbers, one per series per frame.
-//! - [`draw`]: the picture, with plotters.
+//! - `draw`: the picture, with plotters.
 
-pub mod draw;
+pub(crate) mod draw;
 pub mod record;
 
 use std::io::{self, Write};
@@ -32,11 +32,11 @@ use record::Recording;
 
 /// The most frames a plot records: it draws a point per frame per series, so this bounds its
 /// memory (a few MB) and the size of the picture.
-pub const MAX_PLOT_FRAMES: u32 = 100_000;
+pub(crate) const MAX_PLOT_FRAMES: u32 = 100_000;
 
 /// The picture's file format, chosen by the path's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Format {
+pub(crate) enum Format {
     Svg,
     Png,
 }
@@ -44,7 +44,7 @@ pub enum Format {
 impl Format {
     /// PNG for a path ending in `.png`, SVG for `.svg` or no extension; any other extension
     /// is refused rather than given content it does not promise.
-    pub fn of(path: &Path) -> Result<Format, InvalidValue> {
+    pub(crate) fn of(path: &Path) -> Result<Format, InvalidValue> {
         let extension = path.extension().map(|e| e.to_ascii_lowercase());
         match extension.as_ref().and_then(|e| e.to_str()) {
             None | Some("svg") => Ok(Format::Svg),
@@ -60,7 +60,7 @@ impl Format {
 
 /// A plot being recorded during a run, written when the run ends.
 #[derive(Clone, Debug)]
-pub struct Plot {
+pub(crate) struct Plot {
     format: Format,
     recording: Recording,
     title: Vec<String>,
@@ -68,7 +68,7 @@ pub struct Plot {
 
 impl Plot {
     /// A plot of `scene` to be written at `path` (whose extension picks the format).
-    pub fn new(scene: &Scene, path: &Path) -> Result<Plot, InvalidValue> {
+    pub(crate) fn new(scene: &Scene, path: &Path) -> Result<Plot, InvalidValue> {
         let format = Format::of(path)?;
         if scene.frames > MAX_PLOT_FRAMES {
             return Err(InvalidValue {
@@ -92,7 +92,7 @@ impl Plot {
     }
 
     /// Draws the recording and writes it to `out`.
-    pub fn write(&self, mut out: impl Write) -> io::Result<()> {
+    pub(crate) fn write(&self, mut out: impl Write) -> io::Result<()> {
         use_embedded_font()?;
         let size = draw::size(&self.recording, &self.title);
         match self.format {
@@ -112,8 +112,8 @@ impl Plot {
 }
 
 /// A plotters drawing area over an RGB buffer, and what drawing on it can fail with.
-pub type BitmapArea<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
-pub type BitmapAreaError =
+pub(crate) type BitmapArea<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
+pub(crate) type BitmapAreaError =
     DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>;
 
 /// Lets `draw` paint on a white canvas of `size` px and saves it as a PNG at `path`, whole
@@ -135,7 +135,7 @@ pub fn save_png(
 }
 
 /// Lets `draw` paint on a black canvas of `size` px, then writes it to `out` as a PNG.
-pub fn write_png(
+pub(crate) fn write_png(
     out: impl Write,
     size: (u32, u32),
     draw: impl FnOnce(&BitmapArea) -> Result<(), BitmapAreaError>,
@@ -195,7 +195,7 @@ pub fn flag_name(value: impl crate::scene::Named) -> String {
 
 /// Makes plotters' "sans-serif" the DejaVu Sans compiled into the program, so text needs no
 /// system font. Safe to call any number of times; registers once.
-pub fn use_embedded_font() -> io::Result<()> {
+pub(crate) fn use_embedded_font() -> io::Result<()> {
     static REGISTERED: OnceLock<bool> = OnceLock::new();
     let registered = *REGISTERED.get_or_init(|| {
         register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular()).is_ok()

@@ -23,7 +23,7 @@ pub enum PlotPanel {
 
 impl PlotPanel {
     /// The panel's vertical axis, with units.
-    pub fn axis(self) -> &'static str {
+    pub(crate) fn axis(self) -> &'static str {
         match self {
             PlotPanel::Height => "height above the floor, px",
             PlotPanel::Speed => "speed, px/frame",
@@ -122,20 +122,20 @@ impl Recording {
     }
 
     /// How many frames are recorded.
-    pub fn frames(&self) -> u32 {
+    pub(crate) fn frames(&self) -> u32 {
         self.frames
     }
 
     /// The ball's height above the floor, px: how far its centre is above where it rests on
     /// the bottom wall.
-    pub fn height_above_floor(&self, ball: &Ball) -> f64 {
+    pub(crate) fn height_above_floor(&self, ball: &Ball) -> f64 {
         self.height - ball.radius - ball.y
     }
 
     /// Potential energy per unit mass, px²/frame²: gravity times the distance the ball could
     /// still fall along it before touching the walls gravity pulls it towards (for the
     /// lesson's downward gravity, `g·h` with `h` the height above the floor).
-    pub fn potential(&self, ball: &Ball) -> f64 {
+    pub(crate) fn potential(&self, ball: &Ball) -> f64 {
         let Vec2 { x: gx, y: gy } = self.gravity;
         let rest = |g: f64, side: f64| {
             if g < 0.0 {

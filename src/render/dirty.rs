@@ -19,7 +19,7 @@ pub struct Rect {
 
 impl Rect {
     /// The whole of `frame`.
-    pub fn whole(frame: &IndexedFrame) -> Rect {
+    pub(crate) fn whole(frame: &IndexedFrame) -> Rect {
         Rect {
             left: 0,
             top: 0,
@@ -30,7 +30,7 @@ impl Rect {
 
     /// The top-left pixel only: what a frame identical to the last one still writes, so
     /// that it still counts as a frame and keeps its time on screen.
-    pub fn corner() -> Rect {
+    pub(crate) fn corner() -> Rect {
         Rect {
             left: 0,
             top: 0,
@@ -54,12 +54,12 @@ impl Rect {
     }
 
     /// How many pixels it holds.
-    pub fn area(self) -> u64 {
+    pub(crate) fn area(self) -> u64 {
         u64::from(self.width) * u64::from(self.height)
     }
 
     /// Where each of its rows lies in the bytes of a frame `frame_width` px wide, top first.
-    pub fn rows(self, frame_width: u32) -> impl Iterator<Item = Range<usize>> {
+    pub(crate) fn rows(self, frame_width: u32) -> impl Iterator<Item = Range<usize>> {
         let (width, left) = (frame_width as usize, self.left as usize);
         let top = self.top as usize;
         (top..top + self.height as usize).map(move |y| {
@@ -79,11 +79,11 @@ pub fn paste(from: &IndexedFrame, rect: Rect, onto: &mut IndexedFrame) {
 
 /// The side of a tile, px: small enough that a few moving balls mark little of the canvas,
 /// large enough that a ball covers only a few tiles.
-pub const TILE: u32 = 32;
+pub(crate) const TILE: u32 = 32;
 
 /// The canvas cut into square tiles of [`TILE`] px, each marked or not.
 #[derive(Clone, Debug)]
-pub struct Tiles {
+pub(crate) struct Tiles {
     width: u32,
     height: u32,
     /// Tiles per row and per column.
@@ -96,7 +96,7 @@ pub struct Tiles {
 
 impl Tiles {
     /// No tile marked, on a canvas of `width` × `height` px.
-    pub fn new(width: u32, height: u32) -> Tiles {
+    pub(crate) fn new(width: u32, height: u32) -> Tiles {
         let columns = width.div_ceil(TILE) as usize;
         let rows = height.div_ceil(TILE) as usize;
         Tiles {
@@ -112,12 +112,12 @@ impl Tiles {
     /// Whether more than a quarter of the canvas is marked. Drawing a run again costs more
     /// per pixel than drawing the whole frame (each circle in it is cut to it, and a circle
     /// across two runs is traced twice), so beyond this the whole frame is drawn.
-    pub fn much_marked(&self) -> bool {
+    pub(crate) fn much_marked(&self) -> bool {
         4 * self.list.len() > self.marked.len()
     }
 
     /// Marks every tile `rect` (on the canvas) touches.
-    pub fn mark(&mut self, rect: Rect) {
+    pub(crate) fn mark(&mut self, rect: Rect) {
         let (columns, rows) = self.spans(rect);
         for row in rows {
             for tile in row * self.columns + columns.start..row * self.columns + columns.end {
@@ -130,7 +130,7 @@ impl Tiles {
     }
 
     /// Unmarks every tile.
-    pub fn clear(&mut self) {
+    pub(crate) fn clear(&mut self) {
         for &tile in &self.list {
             self.marked[tile] = false;
         }
@@ -139,7 +139,7 @@ impl Tiles {
 
     /// The marked tiles as rectangles on the canvas, each a run of marked tiles along a row
     /// (written into `out`, cleared first).
-    pub fn runs(&self, out: &mut Vec<Rect>) {
+    pub(crate) fn runs(&self, out: &mut Vec<Rect>) {
         out.clear();
         let everywhere = Rect {
             left: 0,
@@ -152,7 +152,7 @@ impl Tiles {
 
     /// The marked runs of tiles `rect` touches, each as the rectangle of the canvas it covers:
     /// where a circle inside `rect` must be drawn again.
-    pub fn marked_runs(&self, rect: Rect) -> impl Iterator<Item = Rect> + '_ {
+    pub(crate) fn marked_runs(&self, rect: Rect) -> impl Iterator<Item = Rect> + '_ {
         let (columns, rows) = self.spans(rect);
         rows.flat_map(move |row| {
             let marked = &self.marked[row * self.columns..(row + 1) * self.columns];

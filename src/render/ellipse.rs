@@ -25,7 +25,7 @@ use crate::work::{tally_many, Work};
 /// Circles this wide or wider are not drawn. A scene's radius is under half its canvas side
 /// (at most 8,192 px), so this is never reached; it keeps the trace's sums of products
 /// such as `a²Y²` (below 2.4e18) inside `i64`.
-pub const MAX_DIAMETER: f64 = 32_768.0;
+pub(crate) const MAX_DIAMETER: f64 = 32_768.0;
 
 /// Fills the circle of centre `(x, y)` and radius `radius` (px, floats) with `index`,
 /// pixel for pixel as Pillow's `ImageDraw.ellipse` fills its bounding box. A negative radius
@@ -39,7 +39,7 @@ pub fn fill_circle(frame: &mut IndexedFrame, x: f64, y: f64, radius: f64, index:
 /// Fills the circle whose box of whole pixels is `pixels`, as [`fill_circle`] does, but only
 /// where it lies inside `clip` (a rectangle of the canvas): drawn piece by piece, a circle
 /// covers what it would whole.
-pub fn fill_box(frame: &mut IndexedFrame, pixels: PixelBox, index: u8, clip: Rect) {
+pub(crate) fn fill_box(frame: &mut IndexedFrame, pixels: PixelBox, index: u8, clip: Rect) {
     let [x0, y0] = [pixels.x0, pixels.y0].map(i64::from);
     let [a, b] = [pixels.a, pixels.b].map(i64::from);
     let (left, top) = (i64::from(clip.left), i64::from(clip.top));
@@ -68,7 +68,7 @@ pub fn fill_box(frame: &mut IndexedFrame, pixels: PixelBox, index: u8, clip: Rec
 ///
 /// Twelve bytes: a canvas remembers one for every circle it drew ([`super::redraw`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PixelBox {
+pub(crate) struct PixelBox {
     x0: i32,
     y0: i32,
     a: u16,
@@ -78,7 +78,7 @@ pub struct PixelBox {
 impl PixelBox {
     /// What a circle that fills nothing is remembered as: no circle that fills a pixel has
     /// this box (a box of 0 by 0 pixels fills nothing).
-    pub const NOTHING: PixelBox = PixelBox {
+    pub(crate) const NOTHING: PixelBox = PixelBox {
         x0: 0,
         y0: 0,
         a: 0,
@@ -87,7 +87,7 @@ impl PixelBox {
 
     /// The box of the circle of centre `(x, y)` and radius `radius` (px); `None` when the
     /// circle fills nothing on `frame`.
-    pub fn of(x: f64, y: f64, radius: f64, frame: &IndexedFrame) -> Option<PixelBox> {
+    pub(crate) fn of(x: f64, y: f64, radius: f64, frame: &IndexedFrame) -> Option<PixelBox> {
         let (width, height) = (f64::from(frame.width()), f64::from(frame.height()));
         let (left, right, top, bottom) = (x - radius, x + radius, y - radius, y + radius);
         // Truncation puts pixel 0 within reach of any edge above -1; NaN fails every test.
@@ -103,7 +103,7 @@ impl PixelBox {
     }
 
     /// The part of the box on `frame`: every pixel the circle may fill. `None` when empty.
-    pub fn on(self, frame: &IndexedFrame) -> Option<Rect> {
+    pub(crate) fn on(self, frame: &IndexedFrame) -> Option<Rect> {
         if self == PixelBox::NOTHING {
             return None;
         }

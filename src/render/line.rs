@@ -6,7 +6,7 @@ use super::palette::IndexedFrame;
 
 /// Sets every pixel of the line from `start` to `end` (px) that lies on `frame` to `index`.
 /// It walks the longer axis one pixel at a time, so callers cut the line to the canvas first.
-pub fn draw_line(frame: &mut IndexedFrame, start: (f32, f32), end: (f32, f32), index: u8) {
+pub(crate) fn draw_line(frame: &mut IndexedFrame, start: (f32, f32), end: (f32, f32), index: u8) {
     let (mut x0, mut y0, mut x1, mut y1) = (start.0, start.1, end.0, end.1);
     // Walk along x; a steep line is walked with its axes swapped.
     let steep = (y1 - y0).abs() > (x1 - x0).abs();

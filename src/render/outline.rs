@@ -9,7 +9,7 @@ use super::palette::IndexedFrame;
 /// in every column the circle crosses, the two pixels it passes through, and the same in
 /// every row, so steep and flat parts alike are unbroken. Only the columns and rows on the
 /// canvas are visited, so a circle far off it costs nothing.
-pub fn outline_circle(frame: &mut IndexedFrame, x: f64, y: f64, radius: f64, index: u8) {
+pub(crate) fn outline_circle(frame: &mut IndexedFrame, x: f64, y: f64, radius: f64, index: u8) {
     if !(x.is_finite() && y.is_finite() && radius > 0.0 && 2.0 * radius < MAX_DIAMETER) {
         return;
     }

@@ -86,7 +86,7 @@ impl Palette {
     /// `stages[0]` is placed first (it should be the one most frames show); then, again and
     /// again, the stage that needs the fewest colours not yet placed (the first of equals).
     /// Colours of no stage go last. The greedy choice is gifsicle's idea, done per stage.
-    pub fn reorder(&mut self, stages: &[Colours]) -> Vec<u8> {
+    pub(crate) fn reorder(&mut self, stages: &[Colours]) -> Vec<u8> {
         // The old indices in their new order, and the set of them.
         let mut order = Vec::with_capacity(self.colours.len());
         let mut placed = Colours::default();
@@ -122,7 +122,7 @@ impl Palette {
 
 /// A set of palette indices, such as the colours some frames draw.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Colours([u64; 4]);
+pub(crate) struct Colours([u64; 4]);
 
 impl Colours {
     /// Indices `0..len`.
@@ -134,21 +134,21 @@ impl Colours {
         all
     }
 
-    pub fn insert(&mut self, index: u8) {
+    pub(crate) fn insert(&mut self, index: u8) {
         self.0[usize::from(index / 64)] |= 1 << (index % 64);
     }
 
-    pub fn contains(&self, index: u8) -> bool {
+    pub(crate) fn contains(&self, index: u8) -> bool {
         self.0[usize::from(index / 64)] & (1 << (index % 64)) != 0
     }
 
     /// Every index in both sets.
-    pub fn union(&self, other: &Colours) -> Colours {
+    pub(crate) fn union(&self, other: &Colours) -> Colours {
         Colours(std::array::from_fn(|w| self.0[w] | other.0[w]))
     }
 
     /// How many of these indices are not in `other`.
-    pub fn count_outside(&self, other: &Colours) -> u32 {
+    pub(crate) fn count_outside(&self, other: &Colours) -> u32 {
         self.0
             .iter()
             .zip(&other.0)
@@ -157,7 +157,7 @@ impl Colours {
     }
 
     /// The indices, lowest first.
-    pub fn indices(&self) -> impl Iterator<Item = u8> + '_ {
+    pub(crate) fn indices(&self) -> impl Iterator<Item = u8> + '_ {
         (0..=u8::MAX).filter(|&i| self.contains(i))
     }
 }
@@ -169,20 +169,20 @@ impl Default for Palette {
 }
 
 /// The lesson's fade: dot `i` (0 = oldest) of a trail of `n` shines at `(i + 1) / n`.
-pub fn fade(i: usize, n: usize) -> f64 {
+pub(crate) fn fade(i: usize, n: usize) -> f64 {
     (i + 1) as f64 / n as f64
 }
 
 /// How a scene's trails look: how their dots darken and whether they shrink into the past.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TrailLook {
+pub(crate) struct TrailLook {
     pub fade: TrailFade,
     pub shrink: bool,
 }
 
 impl TrailLook {
     /// The share of the trail colour dot `i` of a trail of `n` is drawn in.
-    pub fn colour_share(&self, i: usize, n: usize) -> f64 {
+    pub(crate) fn colour_share(&self, i: usize, n: usize) -> f64 {
         match self.fade {
             TrailFade::Linear => fade(i, n),
             TrailFade::None => 1.0,
@@ -191,7 +191,7 @@ impl TrailLook {
     }
 
     /// The share of the ball's radius dot `i` of a trail of `n` is drawn at.
-    pub fn size_share(&self, i: usize, n: usize) -> f64 {
+    pub(crate) fn size_share(&self, i: usize, n: usize) -> f64 {
         if self.shrink {
             fade(i, n)
         } else {
@@ -202,7 +202,7 @@ impl TrailLook {
 
 /// The dots drawn of a trail of `n`: all but the newest. The newest is where the ball is now,
 /// at fade 1, so the same circle as the ball, which is drawn over it: its shade is never seen.
-pub fn drawn_dots(n: usize) -> Range<usize> {
+pub(crate) fn drawn_dots(n: usize) -> Range<usize> {
     0..n.saturating_sub(1)
 }
 
@@ -212,14 +212,14 @@ pub fn shade(colour: Rgb, fade: f64) -> Rgb {
 }
 
 /// `fade` rounded up to one of `levels` evenly spaced steps (the colour budget rule).
-pub fn quantised_fade(fade: f64, levels: usize) -> f64 {
+pub(crate) fn quantised_fade(fade: f64, levels: usize) -> f64 {
     let levels = levels as f64;
     (fade * levels).ceil() / levels
 }
 
 /// How many shades each trail may use so that `solid` colours plus the trails'
 /// shades fit in a GIF: `None` when every exact shade fits, else the level count.
-pub fn fade_levels(
+pub(crate) fn fade_levels(
     solid: &[Rgb],
     trails: &[(Rgb, usize)],
     look: TrailLook,

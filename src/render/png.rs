@@ -9,12 +9,16 @@ use super::palette::Palette;
 use super::raster::to_rgb;
 
 /// Writes `frame` as an RGB PNG.
-pub fn write_png(out: impl Write, frame: &IndexedFrame, palette: &Palette) -> io::Result<()> {
+pub(crate) fn write_png(
+    out: impl Write,
+    frame: &IndexedFrame,
+    palette: &Palette,
+) -> io::Result<()> {
     write_rgb_png(out, &to_rgb(frame, palette))
 }
 
 /// Writes `rgb` as a PNG.
-pub fn write_rgb_png(out: impl Write, rgb: &RgbImage) -> io::Result<()> {
+pub(crate) fn write_rgb_png(out: impl Write, rgb: &RgbImage) -> io::Result<()> {
     image::codecs::png::PngEncoder::new(out)
         .write_image(
             rgb.as_raw(),

@@ -132,7 +132,7 @@ impl Renderer {
     }
 
     /// The most trail dots each ball draws (one fewer than its trail keeps), ball by ball.
-    pub fn most_dots(&self) -> impl Iterator<Item = usize> + '_ {
+    pub(crate) fn most_dots(&self) -> impl Iterator<Item = usize> + '_ {
         self.styles.iter().map(|style| style.most_dots)
     }
 
@@ -145,7 +145,7 @@ impl Renderer {
     }
 
     /// Fills `frame` with the background and draws the floors on it: what lies under the balls.
-    pub fn draw_background(&self, frame: &mut IndexedFrame) {
+    pub(crate) fn draw_background(&self, frame: &mut IndexedFrame) {
         frame.fill(self.background);
         tally_many(Work::PixelsDrawn, frame.as_raw().len() as u64);
         let canvas = Vec2::new(f64::from(self.width), f64::from(self.height));
@@ -159,7 +159,7 @@ impl Renderer {
 
     /// Calls `draw` with every circle [`Renderer::draw`] fills for `balls`, in the order it
     /// fills them: every trail's dots, then every ball.
-    pub fn each_circle(&self, balls: &[Ball], mut draw: impl FnMut(Circle)) {
+    pub(crate) fn each_circle(&self, balls: &[Ball], mut draw: impl FnMut(Circle)) {
         // Balls beyond the scene's have no colours, and are not drawn.
         let balls = &balls[..balls.len().min(self.styles.len())];
         for (i, ball) in balls.iter().enumerate() {
@@ -174,7 +174,11 @@ impl Renderer {
 
     /// The dots drawn of the trail of `ball`, ball number `i`: all but the newest point,
     /// oldest first, fading and shrinking into the past.
-    pub fn trail_dots<'a>(&'a self, i: usize, ball: &'a Ball) -> impl Iterator<Item = Circle> + 'a {
+    pub(crate) fn trail_dots<'a>(
+        &'a self,
+        i: usize,
+        ball: &'a Ball,
+    ) -> impl Iterator<Item = Circle> + 'a {
         let (style, n) = (&self.styles[i], ball.trail.len());
         let dots = ball.trail.iter().take(drawn_dots(n).end).enumerate();
         dots.map(move |(i, &point)| Circle {
@@ -186,7 +190,7 @@ impl Renderer {
     }
 
     /// The circle of `ball` itself, ball number `i`.
-    pub fn ball_circle(&self, i: usize, ball: &Ball) -> Circle {
+    pub(crate) fn ball_circle(&self, i: usize, ball: &Ball) -> Circle {
         Circle {
             x: ball.x,
             y: ball.y,
@@ -198,7 +202,7 @@ impl Renderer {
 
 /// One filled circle of a frame: centre and radius, px, and its palette index.
 #[derive(Clone, Copy, Debug)]
-pub struct Circle {
+pub(crate) struct Circle {
     pub x: f64,
     pub y: f64,
     pub radius: f64,

@@ -9,7 +9,7 @@
 //!
 //! - if no ball would draw anything different, nothing is drawn: the frame is the last one,
 //!   pixel for pixel, and says so ([`Damage::Unchanged`]), so the GIF compares nothing;
-//! - otherwise the tiles ([`super::dirty::Tiles`]) under each changed ball's old and new
+//! - otherwise the tiles (`super::dirty::Tiles`) under each changed ball's old and new
 //!   rectangles (each holding all its circles) are marked. Each run of marked tiles is
 //!   cleared to the background and floors, and every circle touching it is drawn again,
 //!   clipped to it, in the order a whole frame is drawn (every trail, then every ball). The
@@ -19,7 +19,7 @@
 //!   all over, such as billiards, would pay for the looking and gain nothing).
 //!
 //! Why the pixels are those of a whole redraw: the pixels of a circle follow from its box of
-//! whole pixels and its colour alone ([`PixelBox`]), so a ball whose record is the same draws
+//! whole pixels and its colour alone (`PixelBox`), so a ball whose record is the same draws
 //! what it drew, however it moved below a pixel. A pixel outside every marked tile lies under
 //! no circle that changed, so the same circles cover it, in the same order, as in the last
 //! frame; inside, it is drawn again from scratch.
@@ -95,7 +95,7 @@ impl Canvas {
     /// What a canvas remembers of a ball whose trail keeps `trail` points, bytes: the box of
     /// each circle it draws (its dots and itself), its trail's length, where its boxes start,
     /// and whether it was still.
-    pub fn bytes_per_ball(trail: usize) -> u64 {
+    pub(crate) fn bytes_per_ball(trail: usize) -> u64 {
         let circles = drawn_dots(trail).len() + 1;
         let boxes = circles * size_of::<PixelBox>();
         (boxes + 2 * size_of::<usize>() + size_of::<Option<Still>>()) as u64

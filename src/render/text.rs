@@ -16,7 +16,7 @@ use super::palette::IndexedFrame;
 
 /// The height of one line of text, px: the font's ascent plus descent at this size. Nothing
 /// is drawn above or below it.
-pub const TEXT_HEIGHT: u32 = 18;
+pub(crate) const TEXT_HEIGHT: u32 = 18;
 
 /// A pixel is lit where the glyph covers at least this share of it.
 const LIT: f32 = 0.5;
@@ -49,13 +49,13 @@ fn layout(text: &str) -> (Vec<(GlyphId, i32)>, u32) {
 }
 
 /// How wide `text` is when drawn, px.
-pub fn text_width(text: &str) -> u32 {
+pub(crate) fn text_width(text: &str) -> u32 {
     layout(text).1
 }
 
 /// Draws `text` in palette index `colour` with its top-left corner at (`x`, `y`): lit pixels
 /// stay inside `text_width(text)` × [`TEXT_HEIGHT`] from there, and inside the frame.
-pub fn draw_text(frame: &mut IndexedFrame, x: i32, y: i32, text: &str, colour: u8) {
+pub(crate) fn draw_text(frame: &mut IndexedFrame, x: i32, y: i32, text: &str, colour: u8) {
     let font = font().as_scaled(PxScale::from(TEXT_HEIGHT as f32));
     let (glyphs, width) = layout(text);
     // In i64, so a label far off the frame cannot overflow.

@@ -1,7 +1,7 @@
 //! Tiling: several runs' frames side by side on one canvas, each under its label, in one
 //! palette, as a sweep shows them.
 //!
-//! The panels go in rows, as square a grid as fits within [`MAX_CANVAS_SIDE`]. Every cell is
+//! The panels go in rows, as square a grid as fits within `MAX_CANVAS_SIDE`. Every cell is
 //! as big as the largest panel, with a strip above it for the label; a smaller panel sits at
 //! its cell's top-left and the rest of the cell shows the tiling's own background, as do the
 //! gaps between cells. A panel's pixels are its own run's, colour for colour: each panel's
@@ -27,7 +27,7 @@ const BACKGROUND_INDEX: u8 = 0;
 const INK_INDEX: u8 = 1;
 
 /// One panel to place: its label, its size and the palette its frames index.
-pub struct PanelSpec<'a> {
+pub(crate) struct PanelSpec<'a> {
     pub label: &'a str,
     pub width: u32,
     pub height: u32,
@@ -36,7 +36,7 @@ pub struct PanelSpec<'a> {
 
 /// Where the panels go on the canvas, and how their colours map into its palette.
 #[derive(Clone, Debug)]
-pub struct Tiling {
+pub(crate) struct Tiling {
     width: u32,
     height: u32,
     palette: Palette,
@@ -71,7 +71,7 @@ pub enum TileError {
 impl Tiling {
     /// Lays out `panels` in order, row by row; refuses a canvas over the size limit or
     /// colours that do not fit one palette.
-    pub fn new(panels: &[PanelSpec]) -> Result<Tiling, TileError> {
+    pub(crate) fn new(panels: &[PanelSpec]) -> Result<Tiling, TileError> {
         let cell_width = panels.iter().map(|p| p.width).max().unwrap_or(1);
         let cell_height = panels.iter().map(|p| p.height).max().unwrap_or(1);
         let (columns, width, height) = grid(panels.len(), cell_width, cell_height)?;
@@ -103,7 +103,7 @@ impl Tiling {
     }
 
     /// The canvas's size, px.
-    pub fn size(&self) -> (u32, u32) {
+    pub(crate) fn size(&self) -> (u32, u32) {
         (self.width, self.height)
     }
 
@@ -112,13 +112,8 @@ impl Tiling {
         &self.palette
     }
 
-    /// Where panel `i`'s top-left corner lies on the canvas, px.
-    pub fn origin(&self, i: usize) -> (u32, u32) {
-        (self.panels[i].x, self.panels[i].y)
-    }
-
     /// A canvas with the labels and no panel yet.
-    pub fn new_frame(&self) -> IndexedFrame {
+    pub(crate) fn new_frame(&self) -> IndexedFrame {
         self.blank.clone()
     }
 
@@ -248,12 +243,12 @@ mod tests {
         tiling.paste(1, &frame_b, &mut canvas);
         let canvas = to_rgb(&canvas, tiling.palette());
         for (i, (frame, palette)) in [(&frame_a, &a), (&frame_b, &b)].into_iter().enumerate() {
-            let (x, y) = tiling.origin(i);
+            let (x, y) = (tiling.panels[i].x, tiling.panels[i].y);
             let region = image::imageops::crop_imm(&canvas, x, y, frame.width(), frame.height());
             assert!(region.to_image() == to_rgb(frame, palette), "panel {i}");
         }
         // Cells are as big as the largest panel: the second one's sits a cell to the right.
-        assert_eq!(tiling.origin(1).0, GAP + 40 + GAP);
+        assert_eq!(tiling.panels[1].x, GAP + 40 + GAP);
         assert_eq!(tiling.palette().colours().len(), 2 + 4, "black is shared");
     }
 

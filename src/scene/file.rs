@@ -36,7 +36,7 @@ const TRAIL_COLOUR: Rgb = [60, 140, 255];
 
 /// The most bytes a scene file may hold (1 MiB): far more than any hand-written scene, and
 /// a bound on what reading one costs (`[spawn]` makes crowds without long files).
-pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+pub(crate) const MAX_SCENE_BYTES: u64 = 1 << 20;
 
 /// A scene file that cannot be used: where, which key, and why, in one line.
 #[derive(Debug, thiserror::Error)]
@@ -66,19 +66,19 @@ pub fn preset_names() -> Vec<&'static str> {
 /// A canvas size typed on the command line (`--width 1920`), laid over a scene file's own
 /// before its `[spawn]` places balls, so they fill the canvas the run draws.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct CanvasSize {
+pub(crate) struct CanvasSize {
     pub width: Option<u32>,
     pub height: Option<u32>,
 }
 
 /// Reads a scene file (`-`: standard input); `seed` drives any random spawning it asks for.
-/// Only a regular file or standard input, and at most [`MAX_SCENE_BYTES`] of it.
+/// Only a regular file or standard input, and at most `MAX_SCENE_BYTES` of it.
 pub fn load(path: &Path, seed: u64) -> Result<Scene, SceneFileError> {
     load_on(path, seed, CanvasSize::default())
 }
 
 /// [`load`], with the balls spawned on `canvas` where it gives a size.
-pub fn load_on(path: &Path, seed: u64, canvas: CanvasSize) -> Result<Scene, SceneFileError> {
+pub(crate) fn load_on(path: &Path, seed: u64, canvas: CanvasSize) -> Result<Scene, SceneFileError> {
     let stdin = path.as_os_str() == "-";
     let file = if stdin {
         "standard input".to_string()
@@ -131,7 +131,11 @@ pub fn preset(name: &str, seed: u64) -> Result<Scene, SceneFileError> {
 }
 
 /// [`preset`], with the balls spawned on `canvas` where it gives a size.
-pub fn preset_on(name: &str, seed: u64, canvas: CanvasSize) -> Result<Scene, SceneFileError> {
+pub(crate) fn preset_on(
+    name: &str,
+    seed: u64,
+    canvas: CanvasSize,
+) -> Result<Scene, SceneFileError> {
     let (_, text) =
         PRESETS
             .iter()

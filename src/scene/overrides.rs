@@ -28,41 +28,41 @@ mod fit {
     use super::unless_zero;
 
     /// The value itself (`--frames 50`).
-    pub mod plain {
-        pub fn put<T>(value: T) -> T {
+    pub(crate) mod plain {
+        pub(crate) fn put<T>(value: T) -> T {
             value
         }
-        pub fn get<T: Copy>(place: &T) -> Option<T> {
+        pub(crate) fn get<T: Copy>(place: &T) -> Option<T> {
             Some(*place)
         }
     }
 
     /// Turns an effect on with this value: `--damping` adds walls to a scene without them.
-    pub mod turns_on {
-        pub fn put(value: f64) -> Option<f64> {
+    pub(crate) mod turns_on {
+        pub(crate) fn put(value: f64) -> Option<f64> {
             Some(value)
         }
-        pub fn get(place: &Option<f64>) -> Option<f64> {
+        pub(crate) fn get(place: &Option<f64>) -> Option<f64> {
             *place
         }
     }
 
     /// An effect's strength; 0 removes the effect (`--drag 0`).
-    pub mod zero_is_off {
-        pub fn put(value: f64) -> Option<f64> {
+    pub(crate) mod zero_is_off {
+        pub(crate) fn put(value: f64) -> Option<f64> {
             super::unless_zero(value)
         }
-        pub use super::turns_on::get;
+        pub(crate) use super::turns_on::get;
     }
 
     /// Downward gravity, px/frame²; 0 removes gravity.
-    pub mod downwards {
+    pub(crate) mod downwards {
         use crate::physics::Vec2;
 
-        pub fn put(g: f64) -> Option<Vec2> {
+        pub(crate) fn put(g: f64) -> Option<Vec2> {
             super::unless_zero(g).map(|g| Vec2::new(0.0, g))
         }
-        pub fn get(place: &Option<Vec2>) -> Option<f64> {
+        pub(crate) fn get(place: &Option<Vec2>) -> Option<f64> {
             place.map(|g| g.y)
         }
     }
@@ -172,12 +172,12 @@ macro_rules! settings {
 
             /// These values, and `other`'s where these have none (a sweep's value over the
             /// typed flags).
-            pub fn or(&self, other: &Overrides) -> Overrides {
+            pub(crate) fn or(&self, other: &Overrides) -> Overrides {
                 Overrides {$($name: self.$name.or(other.$name),)*}
             }
 
             /// The whole numbers the setting `name` (`width`) allows, if it is a whole number.
-            pub fn whole_range(name: &str) -> Option<RangeInclusive<i64>> {
+            pub(crate) fn whole_range(name: &str) -> Option<RangeInclusive<i64>> {
                 match name {
                     $(stringify!($name) => settings!(@range $($range)?),)*
                     _ => None,
@@ -185,7 +185,7 @@ macro_rules! settings {
             }
 
             /// Whether the setting `name` (`frame_ms`) was typed.
-            pub fn is_typed(&self, name: &str) -> bool {
+            pub(crate) fn is_typed(&self, name: &str) -> bool {
                 match name {
                     $(stringify!($name) => self.$name.is_some(),)*
                     _ => false,
@@ -193,7 +193,7 @@ macro_rules! settings {
             }
 
             /// `command` with each setting's flag showing `scene`'s value as its default.
-            pub fn defaults_from(scene: &Scene, command: Command) -> Command {
+            pub(crate) fn defaults_from(scene: &Scene, command: Command) -> Command {
                 let defaults = [$((
                     stringify!($name),
                     settings!(@get scene, $at ($($field).+) [$($fit)?])

@@ -18,17 +18,17 @@ use crate::physics::walls::Walls;
 pub type Rgb = [u8; 3];
 
 /// The largest canvas side we accept, px: bigger frames make GIFs no viewer wants.
-pub const MAX_CANVAS_SIDE: u32 = 8192;
+pub(crate) const MAX_CANVAS_SIDE: u32 = 8192;
 /// The longest trail we accept, points: every point is drawn every frame.
-pub const MAX_TRAIL_LEN: usize = 1000;
+pub(crate) const MAX_TRAIL_LEN: usize = 1000;
 /// The most balls a scene may hold.
-pub const MAX_BALLS: usize = 1_000_000;
+pub(crate) const MAX_BALLS: usize = 1_000_000;
 /// The most substeps a frame may be split into.
-pub const MAX_SUBSTEPS: u32 = 10_000;
+pub(crate) const MAX_SUBSTEPS: u32 = 10_000;
 /// The most contact-solver iterations a step may take.
-pub const MAX_ITERATIONS: u32 = 1000;
+pub(crate) const MAX_ITERATIONS: u32 = 1000;
 /// GIF stores frame delays in hundredths of a second, as a 16-bit number.
-pub const MAX_FRAME_MS: u32 = 655_350;
+pub(crate) const MAX_FRAME_MS: u32 = 655_350;
 
 /// Everything one run simulates and draws.
 #[derive(Clone, Debug, PartialEq)]
@@ -80,7 +80,7 @@ pub enum TrailFade {
 }
 
 /// The most a trail fade's power may be: beyond it every dot but the newest is black.
-pub const MAX_FADE_POWER: f64 = 20.0;
+pub(crate) const MAX_FADE_POWER: f64 = 20.0;
 
 impl fmt::Display for TrailFade {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -109,7 +109,7 @@ impl TrailFade {
 impl std::str::FromStr for TrailFade {
     type Err = String;
 
-    /// `linear`, `none`, or a power from above 0 to [`MAX_FADE_POWER`] (`2`, `0.5`).
+    /// `linear`, `none`, or a power from above 0 to `MAX_FADE_POWER` (`2`, `0.5`).
     fn from_str(text: &str) -> Result<TrailFade, String> {
         match text.trim() {
             "linear" => Ok(TrailFade::Linear),

@@ -37,7 +37,7 @@ pub enum SweepError {
 impl SweepError {
     /// As a run's: 2 for input the program cannot use, 1 for a file it cannot write, 128 +
     /// the signal's number for a sweep stopped by one.
-    pub fn exit_code(&self) -> u8 {
+    pub(crate) fn exit_code(&self) -> u8 {
         match self {
             SweepError::Run(error) => error.exit_code(),
             _ => 2,

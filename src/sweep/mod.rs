@@ -9,14 +9,14 @@
 //! panel's scene, the tiled canvas's size and colours, the memory, time and GIF size, and the
 //! output paths; the files go into place only once every byte is written.
 //!
-//! - [`values`]: `KEY=V1,V2,...`, each value read by its setting's own flag parser.
+//! - `values`: `KEY=V1,V2,...`, each value read by its setting's own flag parser.
 //! - [`run`](mod@run): the panels run side by side and written as one GIF.
-//! - [`error`]: why a sweep cannot run.
+//! - `error`: why a sweep cannot run.
 
-pub mod error;
+pub(crate) mod error;
 pub mod run;
-pub mod values;
+pub(crate) mod values;
 
-pub use error::SweepError;
+pub(crate) use error::SweepError;
 pub use run::run;
-pub use values::{keys, Change, Panel, Sweep};
+pub(crate) use values::{Change, Sweep};

@@ -24,14 +24,14 @@ pub struct Panel {
 
 /// A sweep as typed: the setting (as its flag is spelt, without `--`) and its values.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Sweep {
+pub(crate) struct Sweep {
     pub key: String,
     pub values: Vec<String>,
 }
 
 /// What one panel changes in the scene, as if typed on the command line.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Change {
+pub(crate) enum Change {
     /// `--preset NAME`.
     Preset(String),
     /// `--seed N`.
@@ -52,7 +52,7 @@ fn flags() -> Command {
 }
 
 /// Every key a sweep can vary, as the flags spell them: `preset` and the settings.
-pub fn keys() -> Vec<String> {
+pub(crate) fn keys() -> Vec<String> {
     let command = flags();
     let mut keys: Vec<String> = command
         .get_arguments()
@@ -97,7 +97,7 @@ impl Sweep {
     /// Each value as the change it makes, read by its flag's parser. `typed` says whether a
     /// setting (`damping`, by its scene name) or, for `preset`, a scene was already chosen on
     /// the command line: the sweep would then fight it.
-    pub fn changes(&self, typed: impl Fn(&str) -> bool) -> Result<Vec<Change>, SweepError> {
+    pub(crate) fn changes(&self, typed: impl Fn(&str) -> bool) -> Result<Vec<Change>, SweepError> {
         if typed(&self.setting()) {
             let flag = match self.key.as_str() {
                 PRESET => "--preset or --scene",
@@ -126,7 +126,7 @@ impl Sweep {
 
     /// The panels: each value's change laid over the scene by `scene_of`, under its label.
     /// `typed` is as for [`Sweep::changes`].
-    pub fn panels(
+    pub(crate) fn panels(
         &self,
         typed: impl Fn(&str) -> bool,
         scene_of: impl Fn(&Change) -> Result<Scene, SceneFileError>,
@@ -142,12 +142,12 @@ impl Sweep {
     }
 
     /// The swept setting as a scene names it (`frame_ms`), or `preset`.
-    pub fn setting(&self) -> String {
+    pub(crate) fn setting(&self) -> String {
         self.key.replace('-', "_")
     }
 
     /// Panel `i`'s label: `damping = 0.88`.
-    pub fn label(&self, i: usize) -> String {
+    pub(crate) fn label(&self, i: usize) -> String {
         format!("{} = {}", self.key, self.values[i])
     }
 }

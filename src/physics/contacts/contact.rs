@@ -25,7 +25,7 @@ pub(super) struct Body {
 }
 
 impl Body {
-    pub fn of(ball: &Ball) -> Body {
+    pub(crate) fn of(ball: &Ball) -> Body {
         Body {
             position: ball.position(),
             velocity: ball.velocity(),
@@ -141,7 +141,7 @@ impl Push {
 }
 
 impl ContactState {
-    pub fn new(
+    pub(crate) fn new(
         normal: Vec2,
         separation: f64,
         restitution: f64,
@@ -183,7 +183,7 @@ impl ContactState {
 
 impl PairContact {
     /// The velocity pass for this contact.
-    pub fn solve_velocity(&mut self, a: &mut Body, b: &mut Body, sub: SubStep) {
+    pub(crate) fn solve_velocity(&mut self, a: &mut Body, b: &mut Body, sub: SubStep) {
         let speed = (b.velocity - a.velocity).dot(self.state.normal);
         let change = self.state.impulse_change(speed, sub);
         self.push_velocities(a, b, change);
@@ -191,7 +191,7 @@ impl PairContact {
 
     /// The position pass for this contact: if the balls overlap beyond the slop, they move
     /// apart by `push`, each its share (the lighter one more), positions only.
-    pub fn relax(&self, a: &mut Body, b: &mut Body, push: Push) {
+    pub(crate) fn relax(&self, a: &mut Body, b: &mut Body, push: Push) {
         if !deeper_than_slop(a, b, self.reach) {
             return; // the common case, without a square root
         }
@@ -207,7 +207,7 @@ impl PairContact {
 
     /// When the balls, flying straight, first touch (infinite if never, 0 if they touch
     /// now); `None` if they overlap by more than the slop, which the position pass handles.
-    pub fn touch_time(&self, balls: &[Body]) -> Option<f64> {
+    pub(crate) fn touch_time(&self, balls: &[Body]) -> Option<f64> {
         let (a, b) = (&balls[self.a], &balls[self.b]);
         let p = b.position - a.position;
         let v = b.velocity - a.velocity;
@@ -232,7 +232,7 @@ impl PairContact {
     }
 
     /// Gives `b` the impulse `impulse` along the normal and `a` the opposite one.
-    pub fn push_velocities(&self, a: &mut Body, b: &mut Body, impulse: f64) {
+    pub(crate) fn push_velocities(&self, a: &mut Body, b: &mut Body, impulse: f64) {
         let normal = self.state.normal;
         let (da, db) = (impulse * self.inverse_a, impulse * self.inverse_b);
         a.velocity -= da * normal;
@@ -242,7 +242,7 @@ impl PairContact {
 
 impl FixedContact {
     /// The velocity pass for this contact.
-    pub fn solve_velocity(&mut self, ball: &mut Body, sub: SubStep) {
+    pub(crate) fn solve_velocity(&mut self, ball: &mut Body, sub: SubStep) {
         let normal = self.state.normal;
         let change = self.state.impulse_change(ball.velocity.dot(normal), sub) / self.state.mass;
         ball.velocity += change * normal;
@@ -250,7 +250,7 @@ impl FixedContact {
 
     /// The position pass for this contact: if the ball is past the line by more than the
     /// slop, it moves back by `push`, position only.
-    pub fn relax(&self, ball: &mut Body, push: Push) {
+    pub(crate) fn relax(&self, ball: &mut Body, push: Push) {
         let separation = self.gap(ball);
         let allowed = SLOP * ball.radius;
         if separation < -allowed {
@@ -261,7 +261,7 @@ impl FixedContact {
 
     /// When the ball, flying straight, reaches the line (infinite if never, 0 if it touches
     /// now); `None` if it is past the line by more than the slop.
-    pub fn touch_time(&self, ball: &Body) -> Option<f64> {
+    pub(crate) fn touch_time(&self, ball: &Body) -> Option<f64> {
         let separation = self.gap(ball);
         let approach = ball.velocity.dot(self.state.normal);
         match separation {
@@ -272,7 +272,7 @@ impl FixedContact {
     }
 
     /// The gap between the ball and the line, px.
-    pub fn gap(&self, ball: &Body) -> f64 {
+    pub(crate) fn gap(&self, ball: &Body) -> f64 {
         ball.position.dot(self.state.normal) - self.offset
     }
 }

@@ -61,7 +61,7 @@ impl Islands {
     /// Groups the `count` balls with a contact this step into islands (those marked
     /// `asleep` take no part), and lists each island's balls and contacts together, keeping
     /// their order within the island: `contacts` are sorted island by island.
-    pub fn sort(&mut self, contacts: &mut Contacts, asleep: &[bool], count: usize) {
+    pub(crate) fn sort(&mut self, contacts: &mut Contacts, asleep: &[bool], count: usize) {
         // Union–find: every ball starts as its own island; each pair contact joins two.
         let parent = &mut self.parent;
         parent.clear();
@@ -147,7 +147,7 @@ impl Islands {
 
     /// The balls in no island (and awake) this step. They are listed without a branch
     /// (about half the balls of a gas, at random, which a branch would mispredict).
-    pub fn untouched(&mut self) -> &[usize] {
+    pub(crate) fn untouched(&mut self) -> &[usize] {
         self.untouched.resize(self.island_of.len(), 0);
         let mut count = 0;
         for (k, &island) in self.island_of.iter().enumerate() {

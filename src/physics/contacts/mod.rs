@@ -9,7 +9,7 @@
 //! This stage owns the grid, the contact solver and its sleeping islands; the solver is laid
 //! out as Box2D v3 lays out its own:
 //!
-//! - [`grid`]: a uniform grid rebuilt every step, so finding the pairs that can touch costs
+//! - `grid`: a uniform grid rebuilt every step, so finding the pairs that can touch costs
 //!   O(N), not O(N²).
 //! - `solver` (Box2D's `solver.c`): the step, its stages in order and the sub-step loop:
 //!   Box2D's sequential impulses for discs, iterated in sub-steps, island by island.
@@ -24,7 +24,7 @@
 
 mod contact;
 mod contact_solver;
-pub mod grid;
+pub(crate) mod grid;
 mod island;
 mod sleep;
 mod solver;

@@ -57,7 +57,7 @@ struct SleepingIsland {
 
 impl Sleep {
     /// Makes room for `count` balls, all awake (the first step only: the count never changes).
-    pub fn fit(&mut self, count: usize) {
+    pub(crate) fn fit(&mut self, count: usize) {
         if self.calm.len() != count {
             *self = Sleep::default();
             self.calm.resize(count, 0);
@@ -66,22 +66,22 @@ impl Sleep {
     }
 
     /// Whether ball `ball` sleeps.
-    pub fn is_asleep(&self, ball: usize) -> bool {
+    pub(crate) fn is_asleep(&self, ball: usize) -> bool {
         self.island_of[ball] != AWAKE
     }
 
     /// How many balls sleep.
-    pub fn sleeping(&self) -> usize {
+    pub(crate) fn sleeping(&self) -> usize {
         self.sleeping
     }
 
     /// Whether some ball sleeps.
-    pub fn anyone_asleep(&self) -> bool {
+    pub(crate) fn anyone_asleep(&self) -> bool {
         self.sleeping > 0
     }
 
     /// Whether every ball sleeps (and there is one): then nothing can move.
-    pub fn everyone_asleep(&self) -> bool {
+    pub(crate) fn everyone_asleep(&self) -> bool {
         self.sleeping > 0 && self.sleeping == self.calm.len()
     }
 
@@ -104,7 +104,7 @@ impl Sleep {
 
     /// After a step: counts each awake ball's calm steps, and puts to sleep each island of
     /// the step (in `context`) whose balls have all been calm for [`SLEEP_FRAMES`].
-    pub fn fall_asleep(&mut self, balls: &mut [Ball], context: &StepContext) {
+    pub(crate) fn fall_asleep(&mut self, balls: &mut [Ball], context: &StepContext) {
         let stepping = &context.stepping;
         if stepping.sleep_speed == 0.0 {
             return; // without gravity nothing sleeps
@@ -155,7 +155,7 @@ impl Sleep {
 
     /// Wakes the island ball `ball` sleeps in, whole (nothing if it is awake). Returns
     /// whether it slept.
-    pub fn wake(&mut self, ball: usize) -> bool {
+    pub(crate) fn wake(&mut self, ball: usize) -> bool {
         let number = self.island_of[ball];
         if number == AWAKE {
             return false;
@@ -174,7 +174,7 @@ impl Sleep {
 
     /// The kept impulses of the islands woken since they were last taken, for the warm
     /// start: the caller takes them (and leaves the list empty).
-    pub fn woken(&mut self) -> &mut Vec<(u64, f64)> {
+    pub(crate) fn woken(&mut self) -> &mut Vec<(u64, f64)> {
         &mut self.woken
     }
 }

@@ -96,10 +96,10 @@ impl ContactSolver {
     /// `MAX_PAIRS_PER_BALL` contacts with their warm-start memory and the scratch they are
     /// solved in (measured: 3.3 KB a ball on 20,000 balls piled on one spot, where every
     /// ball has its most contacts; 3,500 B allows for that).
-    pub const BYTES_PER_BALL: u64 = Grid::BYTES_PER_BALL + 3500;
+    pub(crate) const BYTES_PER_BALL: u64 = Grid::BYTES_PER_BALL + 3500;
 
     /// A solver for ball-ball contacts that keep `restitution` of the approach speed.
-    pub fn new(restitution: f64) -> ContactSolver {
+    pub(crate) fn new(restitution: f64) -> ContactSolver {
         ContactSolver {
             memory: WarmStartMemory::default(),
             sleep: Sleep::default(),
@@ -111,13 +111,13 @@ impl ContactSolver {
     }
 
     /// How many balls sleep now (`super::sleep`).
-    pub fn sleeping(&self) -> usize {
+    pub(crate) fn sleeping(&self) -> usize {
         self.sleep.sleeping()
     }
 
     /// Advances every ball one frame (its substeps) under `effects`, with `motion`'s
     /// integrator and iterations; trails are the caller's business.
-    pub fn step(&mut self, scene_balls: &mut [Ball], effects: &Effects, motion: &Motion) {
+    pub(crate) fn step(&mut self, scene_balls: &mut [Ball], effects: &Effects, motion: &Motion) {
         self.context.stepping = Stepping::new(effects, motion);
         self.sleep.fit(scene_balls.len());
         for _ in 0..self.context.stepping.steps {

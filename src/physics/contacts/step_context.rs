@@ -60,7 +60,7 @@ pub(super) struct Stepping {
 }
 
 impl Stepping {
-    pub fn new(effects: &Effects, motion: &Motion) -> Stepping {
+    pub(crate) fn new(effects: &Effects, motion: &Motion) -> Stepping {
         let (steps, whole) = motion.plan(effects);
         let forces = Forces::new(effects).split(steps * motion.iterations);
         let gravity = effects.gravity.map_or(0.0, |g| g.length());
@@ -84,7 +84,7 @@ impl Stepping {
 
     /// Velocity passes per sub-step: [`LOADED_VELOCITY_PASSES`] when gravity loads the
     /// contacts, else the one a bounce needs.
-    pub fn velocity_passes(&self) -> u32 {
+    pub(crate) fn velocity_passes(&self) -> u32 {
         if self.sub.loaded {
             LOADED_VELOCITY_PASSES
         } else {

@@ -40,14 +40,14 @@ pub(super) struct Cells {
 impl Cells {
     /// Memory per ball, bytes: its cell's column and row, its place in the cell's list, and
     /// up to `MAX_CELLS_PER_BALL` cells' list heads.
-    pub const BYTES_PER_BALL: u64 =
+    pub(crate) const BYTES_PER_BALL: u64 =
         (size_of::<[usize; 2]>() + MAX_CELLS_PER_BALL as usize * size_of::<u32>()) as u64
             + Lists::BYTES_PER_BALL;
 
     /// Lays a grid over the balls as they are now and over `area` (the box from the origin to
     /// this corner, if there is one: the balls will spread over it), and puts each ball in its
     /// cell.
-    pub fn rebuild(&mut self, balls: &[Ball], area: Option<Vec2>) {
+    pub(crate) fn rebuild(&mut self, balls: &[Ball], area: Option<Vec2>) {
         let (mut left, mut top, mut right, mut bottom) = (0.0, 0.0, 0.0, 0.0);
         let mut largest = 0.0f64;
         if let Some(first) = balls.first() {
@@ -89,7 +89,7 @@ impl Cells {
 
     /// Whether `ball` is inside the area the grid was laid over. Beyond it the outermost
     /// cells fill up, and the grid should be laid again.
-    pub fn covers(&self, ball: &Ball) -> bool {
+    pub(crate) fn covers(&self, ball: &Ball) -> bool {
         let (right, bottom) = (
             self.left + self.columns as f64 * self.size,
             self.top + self.rows as f64 * self.size,
@@ -107,7 +107,7 @@ impl Cells {
     }
 
     /// Calls `visit` with every ball in ball `i`'s cell and the eight around it (`i` included).
-    pub fn neighbours(&self, i: usize, visit: impl FnMut(usize)) {
+    pub(crate) fn neighbours(&self, i: usize, visit: impl FnMut(usize)) {
         let counts = [self.columns, self.rows];
         let around = [0, 1].map(|a| around(self.at[i][a], counts[a]));
         self.visit_cells(around, visit);
@@ -116,7 +116,7 @@ impl Cells {
     /// Calls `visit` with every ball in the cells that ball `i`'s last move, along `axis`
     /// towards `towards`, brought around it: the far row (or column) of its new neighbourhood,
     /// three cells (fewer at the grid's edge, none past it).
-    pub fn entered(&self, i: usize, axis: u8, towards: i8, visit: impl FnMut(usize)) {
+    pub(crate) fn entered(&self, i: usize, axis: u8, towards: i8, visit: impl FnMut(usize)) {
         let counts = [self.columns, self.rows];
         let mut cells = [0, 1].map(|a| around(self.at[i][a], counts[a]));
         let a = usize::from(axis);
@@ -142,7 +142,7 @@ impl Cells {
 
     /// When ball `i`, whose centre moves along `path`, first leaves its cell within `left`
     /// frames, along which axis and towards which side.
-    pub fn exit(&self, i: usize, path: &[Poly; 2], left: f64) -> Option<(f64, u8, i8)> {
+    pub(crate) fn exit(&self, i: usize, path: &[Poly; 2], left: f64) -> Option<(f64, u8, i8)> {
         let counts = [self.columns, self.rows];
         let origin = [self.left, self.top];
         let mut first: Option<(f64, u8, i8)> = None;
@@ -170,7 +170,7 @@ impl Cells {
     }
 
     /// Moves ball `i` into the next cell along `axis` towards `towards`.
-    pub fn shift(&mut self, i: usize, axis: u8, towards: i8) {
+    pub(crate) fn shift(&mut self, i: usize, axis: u8, towards: i8) {
         self.balls.remove(i);
         let at = &mut self.at[i][usize::from(axis)];
         *at = at.wrapping_add_signed(isize::from(towards));

@@ -19,7 +19,7 @@ pub(super) struct Lists {
 impl Lists {
     /// Memory per ball, bytes: its list and its two neighbours in it. The lists' heads are
     /// their owner's to count.
-    pub const BYTES_PER_BALL: u64 = 3 * size_of::<u32>() as u64;
+    pub(crate) const BYTES_PER_BALL: u64 = 3 * size_of::<u32>() as u64;
 
     /// `lists` empty lists for `balls` balls.
     pub fn reset(&mut self, lists: usize, balls: usize) {
@@ -32,7 +32,7 @@ impl Lists {
     }
 
     /// Puts `ball`, which is in no list, at the head of list `list`.
-    pub fn insert(&mut self, ball: usize, list: usize) {
+    pub(crate) fn insert(&mut self, ball: usize, list: usize) {
         let first = self.head[list];
         self.list[ball] = list as u32;
         self.next[ball] = first;
@@ -44,7 +44,7 @@ impl Lists {
     }
 
     /// Takes `ball` out of its list, if it is in one.
-    pub fn remove(&mut self, ball: usize) {
+    pub(crate) fn remove(&mut self, ball: usize) {
         let list = self.list[ball];
         if list == NONE {
             return;
@@ -62,13 +62,13 @@ impl Lists {
     }
 
     /// The first ball of list `list`, if it holds any.
-    pub fn first(&self, list: usize) -> Option<usize> {
+    pub(crate) fn first(&self, list: usize) -> Option<usize> {
         let ball = self.head[list];
         (ball != NONE).then_some(ball as usize)
     }
 
     /// The balls in list `list`, most recently put in first.
-    pub fn balls(&self, list: usize) -> impl Iterator<Item = usize> + '_ {
+    pub(crate) fn balls(&self, list: usize) -> impl Iterator<Item = usize> + '_ {
         let mut ball = self.head[list];
         std::iter::from_fn(move || {
             let this = (ball != NONE).then_some(ball as usize)?;

@@ -24,4 +24,4 @@
 mod cells;
 mod lists;
 mod queue;
-pub mod system;
+pub(crate) mod system;

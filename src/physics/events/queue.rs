@@ -76,7 +76,7 @@ pub(super) struct Queue {
 impl Queue {
     /// Memory per ball, bytes: its next event and counter, its place in a day's list (one
     /// day per ball), and its place in today's heap (whose buffer may grow to twice that).
-    pub const BYTES_PER_BALL: u64 = (size_of::<Event>()
+    pub(crate) const BYTES_PER_BALL: u64 = (size_of::<Event>()
         + size_of::<u32>()
         + size_of::<u32>()
         + 2 * size_of::<(f64, u32)>()
@@ -111,7 +111,7 @@ impl Queue {
     /// An event of kind `kind` at `time`, as an event of a ball predicted now (it remembers
     /// the partner's counter, so it can tell later whether the partner has changed course
     /// since).
-    pub fn event(&self, time: f64, kind: EventKind) -> Event {
+    pub(crate) fn event(&self, time: f64, kind: EventKind) -> Event {
         let partner_count = match kind {
             EventKind::Ball(other) => self.counts[other as usize],
             _ => 0,
@@ -125,7 +125,7 @@ impl Queue {
 
     /// Whether `event` still stands: it has no partner, or its partner has not changed course
     /// since it was predicted.
-    pub fn current(&self, event: &Event) -> bool {
+    pub(crate) fn current(&self, event: &Event) -> bool {
         match event.kind {
             EventKind::Ball(other) => self.counts[other as usize] == event.partner_count,
             _ => true,
@@ -133,7 +133,7 @@ impl Queue {
     }
 
     /// Makes `event` the next event of `ball`, replacing the one it had.
-    pub fn set(&mut self, ball: usize, event: Event) {
+    pub(crate) fn set(&mut self, ball: usize, event: Event) {
         if self.place[ball] == NOWHERE {
             self.days.remove(ball);
         } else {
@@ -145,7 +145,7 @@ impl Queue {
 
     /// Marks `ball` as having changed course: events other balls predicted with it are out of
     /// date. (Its own event is replaced when it is predicted again.)
-    pub fn changed(&mut self, ball: usize) {
+    pub(crate) fn changed(&mut self, ball: usize) {
         self.counts[ball] = self.counts[ball].wrapping_add(1);
     }
 
@@ -153,7 +153,7 @@ impl Queue {
     /// the event is current (`false`: its partner changed course since, so only the ball is to
     /// be predicted again). The caller must set the ball's next event (predict it again), or
     /// the same event comes up again.
-    pub fn earliest(&mut self) -> Option<(usize, Event, bool)> {
+    pub(crate) fn earliest(&mut self) -> Option<(usize, Event, bool)> {
         while self.heap.is_empty() {
             if self.today + 1 >= self.days_count() {
                 return None;
@@ -171,7 +171,7 @@ impl Queue {
 
     /// Carries the events still to come over to the next step, which starts a step's length
     /// later: their times move back by that much, and the calendar is laid out afresh.
-    pub fn carry_over(&mut self) {
+    pub(crate) fn carry_over(&mut self) {
         for event in &mut self.next {
             event.time -= self.length;
         }

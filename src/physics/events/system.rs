@@ -117,7 +117,7 @@ impl EventDriven {
     /// Exact mode's memory per ball, bytes, for the budget: the per-ball buffers of this
     /// struct (clock, flight, predicted bounce and contact, supports, flags, last collision),
     /// the calendar's and the grid's.
-    pub const BYTES_PER_BALL: u64 = (2 * size_of::<f64>()
+    pub(crate) const BYTES_PER_BALL: u64 = (2 * size_of::<f64>()
         + size_of::<Forces>()
         + size_of::<Event>()
         + size_of::<Option<Contact>>()
@@ -127,7 +127,7 @@ impl EventDriven {
         + Cells::BYTES_PER_BALL;
 
     /// Exact contacts that keep `restitution` of the approach speed.
-    pub fn new(restitution: f64) -> EventDriven {
+    pub(crate) fn new(restitution: f64) -> EventDriven {
         EventDriven {
             restitution,
             queue: Queue::default(),
@@ -148,17 +148,17 @@ impl EventDriven {
     }
 
     /// What the steps of the last frame did.
-    pub fn counts(&self) -> EventCounts {
+    pub(crate) fn counts(&self) -> EventCounts {
         self.counts
     }
 
     /// How many balls slept in the last step (the sleep rule).
-    pub fn sleeping(&self) -> usize {
+    pub(crate) fn sleeping(&self) -> usize {
         self.asleep.iter().filter(|&&asleep| asleep).count()
     }
 
     /// Advances `balls` by one frame of `steps` steps of `forces.dt` frames.
-    pub fn frame(
+    pub(crate) fn frame(
         &mut self,
         balls: &mut [Ball],
         integrator: Integrator,

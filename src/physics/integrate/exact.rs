@@ -51,7 +51,7 @@ pub(crate) struct Side {
 
 impl Side {
     /// The four walls for `ball`, with the same contact coordinates as `Ball::bounce_off_walls`.
-    pub fn all(walls: &Walls, ball: &Ball) -> [Side; 4] {
+    pub(crate) fn all(walls: &Walls, ball: &Ball) -> [Side; 4] {
         let r = ball.radius;
         // Four calls, not a `map` over four tuples: this runs at every prediction, and the
         // map was not inlined.
@@ -136,7 +136,7 @@ pub(crate) enum Contact {
 
 impl Contact {
     /// Bounces `ball`, which touches this contact now, or lets it come to rest there.
-    pub fn bounce(&self, ball: &mut Ball, forces: &Forces) {
+    pub(crate) fn bounce(&self, ball: &mut Ball, forces: &Forces) {
         match *self {
             Contact::Wall(side) => side.bounce(ball, forces),
             Contact::Face { normal, damping } => bounce_along(ball, normal, damping, forces),
@@ -181,7 +181,7 @@ pub(crate) struct Support {
 impl Support {
     /// Adds a surface the ball rests on (beyond [`MAX_SUPPORTS`], the ball is held
     /// completely).
-    pub fn push(&mut self, n: Vec2) {
+    pub(crate) fn push(&mut self, n: Vec2) {
         if self.len < MAX_SUPPORTS {
             self.normals[self.len] = n;
         }
@@ -194,7 +194,7 @@ impl Support {
     /// of a frictionless disc). In two dimensions that is: along one normal, or between two
     /// normals less than half a turn apart (a wall beside the ball counts: it stops a slide
     /// towards it, and so does a ball above it on the side it would slide to).
-    pub fn hold_completely(&self, g: Vec2) -> bool {
+    pub(crate) fn hold_completely(&self, g: Vec2) -> bool {
         if self.len > MAX_SUPPORTS {
             return true;
         }
@@ -215,7 +215,7 @@ impl Support {
     /// `forces` with gravity's push into every surface removed. On one surface gravity keeps
     /// its tangential part (a ball rests on a slope by sliding down it); if what is left still
     /// presses into another surface, the ball is wedged and held completely.
-    pub fn hold(&self, forces: &Forces) -> Forces {
+    pub(crate) fn hold(&self, forces: &Forces) -> Forces {
         let mut held = *forces;
         if self.len == 0 {
             return held;
@@ -294,7 +294,7 @@ pub(crate) struct BallBounds<'a> {
 
 impl<'a> BallBounds<'a> {
     /// The walls and floors of `effects` as `ball` (its radius) sees them.
-    pub fn of(ball: &Ball, effects: &'a Effects) -> BallBounds<'a> {
+    pub(crate) fn of(ball: &Ball, effects: &'a Effects) -> BallBounds<'a> {
         BallBounds {
             sides: effects.walls.as_ref().map(|walls| Side::all(walls, ball)),
             floors: &effects.floors,
@@ -302,7 +302,7 @@ impl<'a> BallBounds<'a> {
     }
 
     /// The walls and floor faces `ball` rests on now: touching, not moving through them.
-    pub fn support(&self, ball: &Ball) -> Support {
+    pub(crate) fn support(&self, ball: &Ball) -> Support {
         self.surfaces(
             |side| side.distance(ball) == 0.0 && side.component(ball.velocity()) == 0.0,
             |floor| resting_on_face(floor, ball),
@@ -311,7 +311,7 @@ impl<'a> BallBounds<'a> {
 
     /// The walls and floor faces within `gap` (a share of the radius) of `ball`, whatever its
     /// speed: what may hold up a ball that sleeps (`crate::physics::events::system`).
-    pub fn near(&self, ball: &Ball, gap: f64) -> Support {
+    pub(crate) fn near(&self, ball: &Ball, gap: f64) -> Support {
         self.surfaces(
             |side| side.distance(ball) <= gap * ball.radius,
             |floor| face_within(floor, ball, gap),
@@ -336,7 +336,7 @@ impl<'a> BallBounds<'a> {
 
     /// The forces with gravity's push removed on every surface the ball rests on. Resting can
     /// only begin or end at a bounce, so these forces hold until the next one.
-    pub fn supported(&self, ball: &Ball, forces: &Forces) -> Forces {
+    pub(crate) fn supported(&self, ball: &Ball, forces: &Forces) -> Forces {
         if forces.gravity.is_none() {
             return *forces;
         }
@@ -345,7 +345,7 @@ impl<'a> BallBounds<'a> {
 
     /// The earliest wall, floor face or floor end the flight `path` touches within `left`
     /// frames, and when.
-    pub fn first_contact(
+    pub(crate) fn first_contact(
         &self,
         ball: &Ball,
         path: &[Poly; 2],

@@ -49,7 +49,7 @@ pub enum Integrator {
 /// Drag costs one logarithm per ball-frame (and one power with substeps); no drag costs nothing.
 /// The default is no force over no time, for a solver before its first frame.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Forces {
+pub(crate) struct Forces {
     /// Step length, frames.
     pub dt: f64,
     /// px/frame²; `None` costs nothing.
@@ -60,7 +60,7 @@ pub struct Forces {
 
 /// The lesson's drag in the two forms the integrators need.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Drag {
+pub(crate) struct Drag {
     /// `λ = −ln(1 − drag)`, per frame (infinite for drag 1: the air stops the ball dead).
     pub rate: f64,
     /// Share of velocity one step of `dt` keeps: `(1 − drag)^dt`, which is `e^(−λ·dt)`.

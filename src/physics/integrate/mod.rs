@@ -5,7 +5,7 @@
 //! crosses a wall (`super::ball::Ball::step`). That is cheap and stable, but its arcs drift and
 //! a fast ball bounces from where it overshot, not from where it met the wall. This stage adds:
 //!
-//! - [`integrator`]: explicit and semi-implicit Euler, velocity Verlet and RK4, any number of
+//! - `integrator`: explicit and semi-implicit Euler, velocity Verlet and RK4, any number of
 //!   substeps, and the lesson's drag as an exact exponential. A scene needs another integrator
 //!   when its arcs must stay true over long runs (`--integrator rk4`).
 //! - `exact`: `--collisions exact` for walls and floors: the moment in the step at which the
@@ -15,6 +15,6 @@
 //!   `super::events`) are found at: roots of polynomials in the step's time.
 
 pub(crate) mod exact;
-pub mod integrator;
+pub(crate) mod integrator;
 pub(crate) mod poly;
 pub mod toi;

@@ -33,7 +33,7 @@ struct Roots {
 
 impl Poly {
     /// The polynomial with coefficients `c`, lowest degree first.
-    pub fn new(c: &[f64]) -> Poly {
+    pub(crate) fn new(c: &[f64]) -> Poly {
         let mut p = Poly {
             c: [0.0; MAX_DEGREE + 1],
             degree: 0,
@@ -48,7 +48,7 @@ impl Poly {
     }
 
     /// The value at `t` (Horner's rule).
-    pub fn at(&self, t: f64) -> f64 {
+    pub(crate) fn at(&self, t: f64) -> f64 {
         self.c[..=self.degree]
             .iter()
             .rev()
@@ -56,17 +56,17 @@ impl Poly {
     }
 
     /// The coefficient of `t^i` (0 beyond the degree).
-    pub fn coefficient(&self, i: usize) -> f64 {
+    pub(crate) fn coefficient(&self, i: usize) -> f64 {
         self.c.get(i).copied().unwrap_or(0.0)
     }
 
     /// The highest power with a non-zero coefficient.
-    pub fn degree(&self) -> usize {
+    pub(crate) fn degree(&self) -> usize {
         self.degree
     }
 
     /// The derivative's value at `t`.
-    pub fn slope(&self, t: f64) -> f64 {
+    pub(crate) fn slope(&self, t: f64) -> f64 {
         self.derivative().at(t)
     }
 
@@ -82,7 +82,7 @@ impl Poly {
 
     /// The largest `|self(t) − self(0)|` can be for `t` in `[0, end]`: a cheap bound that
     /// lets a wall far from the ball be skipped without looking for roots.
-    pub fn reach(&self, end: f64) -> f64 {
+    pub(crate) fn reach(&self, end: f64) -> f64 {
         self.c[1..=self.degree.max(1)]
             .iter()
             .rev()
@@ -91,13 +91,13 @@ impl Poly {
 
     /// The first time in `[0, end]` at which the polynomial is below zero, if any, as the last
     /// time it was still ≥ 0 (so a ball moved there is touching, not inside). Assumes `at(0) ≥ 0`.
-    pub fn first_negative(&self, end: f64) -> Option<f64> {
+    pub(crate) fn first_negative(&self, end: f64) -> Option<f64> {
         self.first_crossing(end).map(|(before, _)| before)
     }
 
     /// The first crossing below zero in `[0, end]` as two adjacent times: the last one still
     /// ≥ 0 and the first one below. Assumes `at(0) ≥ 0`.
-    pub fn first_crossing(&self, end: f64) -> Option<(f64, f64)> {
+    pub(crate) fn first_crossing(&self, end: f64) -> Option<(f64, f64)> {
         if self.degree == 1 {
             return self.line_crossing(end);
         }
