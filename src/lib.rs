@@ -19,8 +19,10 @@
 //! works out before the first frame what a scene will cost, [`output`] makes files appear
 //! whole or not at all and only where a file belongs, [`stop`] ends a run cleanly on a
 //! signal, [`trace`] writes the CSV, [`progress`] shows how far a long run is. Beneath every
-//! stage, [`work`] counts the work each does, for the tests. Above them all, [`cli`] reads the
+//! stage, `work` counts the work each does, for the tests. Above them all, [`cli`] reads the
 //! command line and [`messages`] says what went wrong in one line.
+//! What only the integration tests reach into, and no program needs, is gathered in
+//! `testing`, outside the documented API.
 //!
 //! # Example
 //!
@@ -54,8 +56,10 @@ pub mod run;
 pub mod scene;
 pub mod stop;
 pub mod sweep;
+#[doc(hidden)]
+pub mod testing;
 pub mod trace;
-pub mod work;
+pub(crate) mod work;
 
 pub use job::{Job, OutputKind, RunError, Summary};
 pub use run::run;

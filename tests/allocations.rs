@@ -3,9 +3,10 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use bouncing_ball::gif::encoder::{queue_frames, GifWriter};
+use bouncing_ball::gif::GifWriter;
 use bouncing_ball::render::{Canvas, Renderer};
 use bouncing_ball::scene::file as scene_file;
+use bouncing_ball::testing::queue_frames;
 
 /// The system allocator, counting every allocation.
 struct Counting;

@@ -3,7 +3,7 @@
 //! laws. `docs/contacts.md` has the figures these bounds come from.
 
 use bouncing_ball::physics::ball::Ball;
-use bouncing_ball::physics::vec2::Vec2;
+use bouncing_ball::physics::Vec2;
 use bouncing_ball::scene::file::preset;
 use bouncing_ball::{BallSpec, Scene};
 use bouncing_ball_lab::accuracy::{

@@ -5,7 +5,7 @@ use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::Motion;
-use bouncing_ball::physics::vec2::Vec2;
+use bouncing_ball::physics::Vec2;
 
 fn floor_only(floor: Floor, gravity: Option<Vec2>) -> Effects {
     Effects {

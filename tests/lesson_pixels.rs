@@ -8,9 +8,9 @@ mod common;
 
 use std::collections::BTreeSet;
 
-use bouncing_ball::render::ellipse::fill_circle;
 use bouncing_ball::render::IndexedFrame;
 use bouncing_ball::scene::file as scene_file;
+use bouncing_ball::testing::fill_circle;
 use bouncing_ball::{run, Job, OutputKind};
 use common::{decode_gif, lesson_scene, REBLESS};
 

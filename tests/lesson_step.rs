@@ -7,7 +7,7 @@ mod common;
 
 use bouncing_ball::physics::{Ball, Integrator, Motion, Vec2, Walls};
 use bouncing_ball::scene::file as scene_file;
-use bouncing_ball::work::{self, Work};
+use bouncing_ball::testing::work::{self, Work};
 use bouncing_ball::{BallSpec, Scene};
 use common::lesson_scene;
 use proptest::prelude::*;

@@ -6,7 +6,7 @@ mod common;
 
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::floor::Floor;
-use bouncing_ball::physics::vec2::Vec2;
+use bouncing_ball::physics::Vec2;
 use bouncing_ball::render::{IndexedFrame, Renderer};
 use bouncing_ball::Scene;
 use common::lesson_scene;

@@ -3,7 +3,7 @@
 
 mod common;
 
-use bouncing_ball::plot::record::Recording;
+use bouncing_ball::testing::Recording;
 use common::{lesson_scene, lesson_trace, run_in, stderr, trace_rows};
 
 /// Every `<polyline>` of an SVG: its stroke colour and its points, px.

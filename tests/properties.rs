@@ -5,8 +5,8 @@
 use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
 use bouncing_ball::physics::simulation::Simulation;
-use bouncing_ball::physics::vec2::Vec2;
 use bouncing_ball::physics::Integrator;
+use bouncing_ball::physics::Vec2;
 use bouncing_ball::scene::Named;
 use bouncing_ball::{BallSpec, Scene};
 use proptest::prelude::*;

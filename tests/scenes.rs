@@ -5,12 +5,12 @@ mod common;
 
 use bouncing_ball::physics::motion::{CollisionMode, Motion, DEFAULT_ITERATIONS};
 use bouncing_ball::physics::{Ball, Vec2};
-use bouncing_ball::render::palette::{shade, MAX_COLOURS};
 use bouncing_ball::render::Renderer;
 use bouncing_ball::scene::file::{self as scene_file, SceneFileError, PRESETS};
-use bouncing_ball::scene::overrides::Overrides;
 use bouncing_ball::scene::TrailFade;
-use bouncing_ball::work::{self, Work};
+use bouncing_ball::testing::work::{self, Work};
+use bouncing_ball::testing::Overrides;
+use bouncing_ball::testing::{shade, MAX_COLOURS};
 use bouncing_ball::{BallSpec, Scene};
 use common::lesson_scene;
 

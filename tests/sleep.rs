@@ -7,7 +7,7 @@ use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::motion::CollisionMode;
 use bouncing_ball::physics::simulation::Simulation;
 use bouncing_ball::scene::file::{preset, Spawn};
-use bouncing_ball::work::{self, Work};
+use bouncing_ball::testing::work::{self, Work};
 use bouncing_ball_lab::accuracy::deepest_overlap;
 use bouncing_ball_lab::scenes::late_drop;
 

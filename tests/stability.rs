@@ -7,9 +7,9 @@ mod common;
 use bouncing_ball::physics::ball::Ball;
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};
-use bouncing_ball::physics::vec2::Vec2;
 use bouncing_ball::physics::walls::Walls;
 use bouncing_ball::physics::Integrator;
+use bouncing_ball::physics::Vec2;
 use bouncing_ball_lab::accuracy::{bounces, lesson_effects, FLOOR, GRAVITY, RADIUS};
 
 const INTEGRATORS: [Integrator; 4] = [

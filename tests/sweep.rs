@@ -5,7 +5,7 @@ mod common;
 
 use std::path::Path;
 
-use bouncing_ball::render::tile::{GAP, LABEL_STRIP};
+use bouncing_ball::testing::{GAP, LABEL_STRIP};
 use common::{decode_gif, run_in};
 use image::RgbImage;
 

@@ -4,12 +4,12 @@
 
 mod common;
 
-use bouncing_ball::gif::encoder::GifWriter;
-use bouncing_ball::render::dirty::Rect;
-use bouncing_ball::render::redraw::MOST_BUSY_FRAMES;
+use bouncing_ball::gif::GifWriter;
 use bouncing_ball::render::{Canvas, Damage, IndexedFrame, Renderer};
 use bouncing_ball::scene::file as scene_file;
-use bouncing_ball::work::{self, Work};
+use bouncing_ball::testing::work::{self, Work};
+use bouncing_ball::testing::Rect;
+use bouncing_ball::testing::MOST_BUSY_FRAMES;
 use bouncing_ball::{BallSpec, Scene};
 use common::decode_gif;
 

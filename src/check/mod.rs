@@ -4,7 +4,7 @@
 //! pixel), a PNG (the last frame), or a trajectory (value by value). When the work differs,
 //! each of the lesson's named mistakes is simulated too, and the one it matches is named.
 //!
-//! - [`animation`]: a GIF read as a viewer shows it, within the memory budget.
+//! - `animation`: a GIF read as a viewer shows it, within the memory budget.
 //! - `pictures`: the handed-in pictures frame by frame, against the expected ones.
 //! - `pixels`: whether two pictures match, within a tolerance; the picture of a difference.
 //! - `trajectory`: a `--trace` CSV or the lesson's `x y vx vy` lines, value by value.
@@ -13,7 +13,7 @@
 //! - `found`: where a file first differs, or why it cannot be graded.
 //! - `verdict`: what is said about each file, as a line or as JSON.
 
-pub mod animation;
+pub(crate) mod animation;
 pub(crate) mod expected;
 pub(crate) mod found;
 pub(crate) mod pictures;

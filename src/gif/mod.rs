@@ -1,17 +1,17 @@
 //! The animated GIF: only what changed in each frame, compressed on every core, streamed out.
 //!
 //! - [`delta`]: the rectangle that changed since the last frame.
-//! - [`transparency`]: unchanged pixels marked transparent, two ways.
-//! - [`interlace`]: GIF's interlaced row order, another order for LZW to read.
+//! - `transparency`: unchanged pixels marked transparent, two ways.
+//! - `interlace`: GIF's interlaced row order, another order for LZW to read.
 //! - [`lzw`]: GIF's LZW compression, one coder per thread.
 //! - `cheapest`: each frame's smallest encoding among a few candidates.
-//! - [`encoder`]: frames queued in a bounded batch, compressed in parallel, written in order.
+//! - `encoder`: frames queued in a bounded batch, compressed in parallel, written in order.
 
 pub(crate) mod cheapest;
 pub mod delta;
-pub mod encoder;
-pub mod interlace;
+pub(crate) mod encoder;
+pub(crate) mod interlace;
 pub mod lzw;
-pub mod transparency;
+pub(crate) mod transparency;
 
 pub use encoder::GifWriter;

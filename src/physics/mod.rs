@@ -18,9 +18,9 @@
 //!   lets piles rest.
 //! - `events`: ball-ball collisions in exact mode, event by event.
 //!
-//! Shared by all: [`vec2`] (the 2-D vector), [`maths`] (transcendental functions, the same
+//! Shared by all: `vec2` (the 2-D vector), [`maths`] (transcendental functions, the same
 //! bits on every system), [`tolerances`] (every tolerance with its unit and reason). The work
-//! each effect does is counted for the tests in [`crate::work`].
+//! each effect does is counted for the tests in `crate::work`.
 
 pub mod ball;
 pub mod contacts;
@@ -32,7 +32,7 @@ pub mod maths;
 pub mod motion;
 pub mod simulation;
 pub mod tolerances;
-pub mod vec2;
+pub(crate) mod vec2;
 pub mod walls;
 
 pub use ball::{Ball, Trail};

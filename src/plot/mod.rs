@@ -6,11 +6,11 @@
 //! It reads the states the run produces (the same ones the trace writes) and the scene's
 //! settings; nothing in physics, scene, render or gif imports it.
 //!
-//! - [`record`]: the numbers, one per series per frame.
+//! - `record`: the numbers, one per series per frame.
 //! - `draw`: the picture, with plotters.
 
 pub(crate) mod draw;
-pub mod record;
+pub(crate) mod record;
 
 use std::io::{self, Write};
 use std::path::Path;

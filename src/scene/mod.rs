@@ -2,7 +2,7 @@
 //!
 //! - `spec`: the scene itself (canvas, balls, effects, motion), its limits and validation.
 //! - [`file`](mod@file): TOML scene files and the bundled presets.
-//! - [`overrides`]: command-line flags laid over a scene, one table row per setting.
+//! - `overrides`: command-line flags laid over a scene, one table row per setting.
 //! - `names`: how flags and files spell the integrators and collision modes.
 //! - [`random`]: the seeded generator behind `[spawn]` (same seed, same scene).
 //!
@@ -10,11 +10,11 @@
 
 pub mod file;
 pub(crate) mod names;
-pub mod overrides;
+pub(crate) mod overrides;
 pub mod random;
 pub(crate) mod spec;
 
 pub use file::{preset, preset_names, SceneFileError, PRESETS};
 pub use names::Named;
-pub use overrides::Overrides;
+pub(crate) use overrides::Overrides;
 pub use spec::{BallSpec, InvalidValue, Rgb, Scene, TrailFade};

@@ -4,7 +4,7 @@
 //!
 //! Each panel is, pixel for pixel, the run the main command makes with that value typed as a
 //! flag: the scene is built the same way, drawn by the same renderer, and its colours are
-//! only renumbered into the tiling's palette ([`crate::render::tile`]). As in [`crate::run()`],
+//! only renumbered into the tiling's palette (`crate::render::tile`). As in [`crate::run()`],
 //! everything that can be refused is refused before the first frame: the values, each
 //! panel's scene, the tiled canvas's size and colours, the memory, time and GIF size, and the
 //! output paths; the files go into place only once every byte is written.

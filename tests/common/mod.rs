@@ -7,9 +7,9 @@ pub mod process;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use bouncing_ball::check::animation::lzw_indices;
 use bouncing_ball::physics::Vec2;
 use bouncing_ball::render::{to_rgb, Renderer};
+use bouncing_ball::testing::lzw_indices;
 use bouncing_ball::{BallSpec, Scene};
 use image::RgbImage;
 
