@@ -56,7 +56,7 @@ use crate::work::{tally, Work};
 /// creates one.
 #[derive(Clone, Debug)]
 pub(crate) struct ContactSolver {
-    /// All of the contacts that carries from one step to the next.
+    /// What carries from one step to the next: each contact's last impulse, for warm starting.
     memory: WarmStartMemory,
     /// The sleeping islands, and how long each awake ball has been calm.
     sleep: Sleep,
