@@ -159,8 +159,11 @@ pub fn send(child: &Child, request: Request) {
 #[cfg(windows)]
 pub fn send(child: &Child, request: Request) {
     use std::os::windows::io::AsRawHandle;
+    use windows_sys::Win32::Foundation::WAIT_OBJECT_0;
     use windows_sys::Win32::System::LibraryLoader::{GetModuleHandleA, GetProcAddress};
-    use windows_sys::Win32::System::Threading::{CreateRemoteThread, LPTHREAD_START_ROUTINE};
+    use windows_sys::Win32::System::Threading::{
+        CreateRemoteThread, WaitForSingleObject, LPTHREAD_START_ROUTINE,
+    };
     let event: usize = match request {
         Request::Interrupt => 0, // CTRL_C_EVENT
         Request::Terminate => 1, // CTRL_BREAK_EVENT
@@ -182,7 +185,14 @@ pub fn send(child: &Child, request: Request) {
             0,
             std::ptr::null_mut(),
         );
-        assert!(!thread.is_null(), "{}", std::io::Error::last_os_error());
+        if thread.is_null() {
+            // A child that has ended by itself can no longer take a thread (Wine says access
+            // denied); the request is moot then, as `kill` on an ended child is on Unix.
+            let error = std::io::Error::last_os_error();
+            let ended = WaitForSingleObject(child.as_raw_handle(), 0) == WAIT_OBJECT_0;
+            assert!(ended, "{error}");
+            return;
+        }
         windows_sys::Win32::Foundation::CloseHandle(thread);
     }
 }
