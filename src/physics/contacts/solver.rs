@@ -189,33 +189,19 @@ fn execute(stage: Stage, context: &mut StepContext, island: &Island) {
 /// The integrate velocities stage: the integrator adds a sub-step's gravity and drag to
 /// each of the island's velocities (before the flight, for the integrators that kick first).
 fn integrate_velocities(context: &mut StepContext, island: &Island) {
-    let StepContext {
-        stepping,
-        bodies,
-        islands,
-        ..
-    } = context;
-    for &i in &islands.balls[island.balls.clone()] {
-        stepping
-            .integrator
-            .kick_before(&mut bodies[i], &stepping.forces);
-    }
+    context.move_each_ball(island, |stepping, body| {
+        stepping.integrator.kick_before(body, &stepping.forces);
+    });
 }
 
 /// The integrate positions stage: each of the island's balls flies a sub-step with its
 /// solved velocity (then takes the kick of the integrators that kick after).
 fn integrate_positions(context: &mut StepContext, island: &Island) {
-    let StepContext {
-        stepping,
-        bodies,
-        islands,
-        ..
-    } = context;
-    let (integrator, forces) = (stepping.integrator, &stepping.forces);
-    for &i in &islands.balls[island.balls.clone()] {
-        integrator.fly(&mut bodies[i], forces, forces.dt);
-        integrator.kick_after(&mut bodies[i], forces);
-    }
+    context.move_each_ball(island, |stepping, body| {
+        let (integrator, forces) = (stepping.integrator, &stepping.forces);
+        integrator.fly(body, forces, forces.dt);
+        integrator.kick_after(body, forces);
+    });
 }
 
 /// A ball that can touch nothing in this step takes it in one go, as in the lesson (a

@@ -5,7 +5,7 @@
 
 use super::contact::{Body, Contacts, SubStep};
 use super::grid::Grid;
-use super::island::Islands;
+use super::island::{Island, Islands};
 use crate::physics::effects::Effects;
 use crate::physics::integrate::integrator::{Forces, Integrator};
 use crate::physics::motion::Motion;
@@ -35,6 +35,19 @@ pub(super) struct StepContext {
     pub contacts: Contacts,
     /// The balls with a contact, island by island.
     pub islands: Islands,
+}
+
+impl StepContext {
+    /// Moves each of `island`'s balls by `motion`, given the step's settings.
+    pub fn move_each_ball(
+        &mut self,
+        island: &Island,
+        mut motion: impl FnMut(&Stepping, &mut Body),
+    ) {
+        for &i in &self.islands.balls[island.balls.clone()] {
+            motion(&self.stepping, &mut self.bodies[i]);
+        }
+    }
 }
 
 /// How the steps of one frame move the balls, worked out once per frame.

@@ -72,17 +72,9 @@ fn restore(context: &mut StepContext, island: &Island) {
 
 /// Flies each of the island's balls straight on for `time` frames.
 fn fly(context: &mut StepContext, island: &Island, time: f64) {
-    let StepContext {
-        stepping,
-        bodies,
-        islands,
-        ..
-    } = context;
-    for &i in &islands.balls[island.balls.clone()] {
-        stepping
-            .integrator
-            .fly(&mut bodies[i], &stepping.whole, time);
-    }
+    context.move_each_ball(island, |stepping, body| {
+        stepping.integrator.fly(body, &stepping.whole, time);
+    });
 }
 
 /// Solves contact `first` of `island` (of its pairs then its fixed contacts, numbered in that
