@@ -290,7 +290,7 @@ fn the_150_ball_pile_comes_to_rest_without_overlap_and_every_frame_finishes() {
 #[test]
 fn the_pile_preset_in_exact_mode_falls_asleep_and_then_costs_no_events() {
     // Before the held ball stopped pressing into the ball resting on it, velocity Verlet
-    // needed 385,736 events over these 300 frames (40-odd of them capped), RK4 more.
+    // needed 385,736 events over these 300 frames (29 steps capped), RK4 374,095.
     const MOST_EVENTS: u64 = 150_000;
     const ASLEEP_BY: u32 = 150;
     for integrator in [Integrator::VelocityVerlet, Integrator::Rk4] {
