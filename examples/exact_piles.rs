@@ -8,7 +8,7 @@
 //! of the radius, the most events in a frame, and how many frames hit the cap of 64 events
 //! per ball (9,600) and dropped the rest of their step.
 //!
-//! Run: `cargo run --release --example exact_piles` (about 30 s).
+//! Run: `cargo run --release --example exact_piles` (about 8 s).
 
 use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::motion::{CollisionMode, Motion};

@@ -18,18 +18,20 @@
 //! - **Rest rule.** At the start of each step a ball that touches, without normal speed, a
 //!   wall, a floor or a ball that is itself held, and that gravity presses onto it, is *held*:
 //!   that part of gravity is removed from its step, as the wall's rest rule does. A collision
-//!   with `e < 1` whose rebound would be slower than [`REST_SPEED`], of a ball that
+//!   with `e < 1` whose rebound would be slower than `REST_SPEED`, of a ball that
 //!   gravity presses onto a held ball, ends with the falling ball at rest on the held one, as
 //!   on a wall (the held ball is not pushed: what holds it takes the impulse). Without this a
 //!   ball landing on a resting pile would bounce between pile and ball in ever smaller steps,
-//!   without end.
+//!   without end. From then on gravity presses neither ball into the other (each leans on the
+//!   other as on a wall): on curved flights a held ball sliding into the one that rests on it
+//!   would otherwise meet it again every few ten-thousandths of a frame.
 //! - **Sleep rule** (DynamO's sleeping particles, Bannerman, Strobl & Pöschel): at the start
 //!   of each step, a ball no faster than gravity makes it in one step that walls, floors and
 //!   sleeping balls within 1 % of its radius hold up completely (no way left to slide:
 //!   pushes along their normals alone can balance gravity) sleeps: it stops, and for the step
 //!   it is a fixed obstacle. Balls may hold each other up, so the sleepers are the largest
 //!   set of slow balls that holds itself up. Struck so hard that the rebound reaches
-//!   [`REST_SPEED`], it wakes and collides as usual. A settled pile sleeps whole and
+//!   `REST_SPEED`, it wakes and collides as usual. A settled pile sleeps whole and
 //!   has no events at all; and once a step has found every ball asleep and resolved no
 //!   event, it has left every ball as it found it (stopped, where it was), so every later
 //!   step would do the same: none is taken, and a settled scene costs nothing.
@@ -41,17 +43,17 @@
 //!   dropped: nothing overlaps, time is lost (and the Euler methods' gravity kick for the
 //!   dropped time is taken back). [`EventCounts`] reports each such step.
 
+mod collide;
+
 use super::cells::Cells;
 use super::queue::{Event, EventKind, Queue, NOTHING};
-use crate::physics::ball::{mass, Ball};
+use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
 use crate::physics::integrate::exact::{self, BallBounds, Contact, Support};
 use crate::physics::integrate::integrator::{Forces, Integrator};
 use crate::physics::integrate::poly::Poly;
 use crate::physics::integrate::toi;
-use crate::physics::tolerances::{
-    BALL_TOUCH_GAP, MAX_EVENTS_PER_BALL, REST_SPEED, SLEEP_GAP, TC_DURATION, TOUCH_SPEED,
-};
+use crate::physics::tolerances::{BALL_TOUCH_GAP, MAX_EVENTS_PER_BALL, SLEEP_GAP, TOUCH_SPEED};
 use crate::physics::vec2::Vec2;
 use crate::work::{tally, Work};
 
@@ -559,117 +561,6 @@ impl EventDriven {
             toi::first_touch(&relative, reach, end)
         };
         touch.filter(|&time| time < end)
-    }
-
-    /// Bounces balls `i` and `j`, which touch now, along the line through their centres.
-    ///
-    /// Both get the same impulse in opposite directions, so momentum is kept; the relative
-    /// normal speed `u < 0` becomes `−e·u`, so with `e ≤ 1` kinetic energy never rises. The
-    /// TC model chooses `e`; a sleeping ball struck hard wakes; and with `e < 1` a rebound
-    /// slower than `REST_SPEED` may end in rest instead (the rest rule).
-    fn collide(&mut self, balls: &mut [Ball], i: usize, j: usize, forces: &Forces, now: f64) {
-        let (a, b) = (&balls[i], &balls[j]);
-        let offset = b.position() - a.position();
-        let distance = offset.length_squared().sqrt();
-        if distance == 0.0 {
-            return;
-        }
-        let n = offset / distance;
-        let approach = (b.velocity() - a.velocity()).dot(n);
-        if approach >= 0.0 {
-            return;
-        }
-        let e = self.restitution_now([i, j], now);
-        let rebound = -e * approach;
-        self.wake_if_struck_hard([i, j], rebound, forces);
-        if e < 1.0 && rebound < REST_SPEED && self.come_to_rest(balls, [i, j], n, forces) {
-            return;
-        }
-        self.exchange_impulse(balls, [i, j], n, (1.0 + e) * approach);
-    }
-
-    /// The restitution of a collision of balls `i` and `j` now, by the TC model: elastic
-    /// within [`TC_DURATION`] of either ball's previous collision, the scene's otherwise.
-    /// Notes the time of this one for both.
-    fn restitution_now(&mut self, [i, j]: [usize; 2], now: f64) -> f64 {
-        let time = self.elapsed + now;
-        let recent = [i, j].map(|k| time - self.last_collision[k] < TC_DURATION);
-        self.last_collision[i] = time;
-        self.last_collision[j] = time;
-        if recent[0] || recent[1] {
-            1.0
-        } else {
-            self.restitution
-        }
-    }
-
-    /// Wakes each sleeping ball of the pair struck hard enough to rebound at the rest speed,
-    /// `rebound` px/frame or more (and it falls again); struck softer it stays put, as a wall
-    /// would.
-    fn wake_if_struck_hard(&mut self, pair: [usize; 2], rebound: f64, forces: &Forces) {
-        for k in pair {
-            if self.asleep[k] && rebound >= REST_SPEED {
-                self.asleep[k] = false;
-                self.held[k] = false;
-                self.flight[k] = *forces;
-            }
-        }
-    }
-
-    /// The rest rule: a ball of the pair that gravity presses onto the other, a held ball,
-    /// comes to rest on it as on a wall: it loses its normal speed relative to the held ball,
-    /// which is part of what holds it and is not pushed (the floor below takes the impulse, as
-    /// a wall does). `n` is the normal from `i` to `j`. Returns whether one came to rest.
-    fn come_to_rest(
-        &mut self,
-        balls: &mut [Ball],
-        [i, j]: [usize; 2],
-        n: Vec2,
-        forces: &Forces,
-    ) -> bool {
-        let resting = if self.held[i] && exact::pressed(forces, n) {
-            Some((i, j, n))
-        } else if self.held[j] && exact::pressed(forces, -n) {
-            Some((j, i, -n))
-        } else {
-            None
-        };
-        let Some((holder, resting, n)) = resting else {
-            return false;
-        };
-        let holder = balls[holder].velocity();
-        let ball = &mut balls[resting];
-        let into = (ball.velocity() - holder).dot(n);
-        let velocity = ball.velocity() - into * n;
-        (ball.vx, ball.vy) = (velocity.x, velocity.y);
-        // From now on gravity no longer presses it into the held ball, as on a wall: on a
-        // curved flight (Verlet's, RK4's) it would press in again at once.
-        if !self.asleep[resting] {
-            self.support[resting].push(n);
-            self.flight[resting] = self.support[resting].hold(forces);
-        }
-        self.held[i] = true;
-        self.held[j] = true;
-        true
-    }
-
-    /// Gives balls `i` and `j` opposite impulses along `n` (from `i` to `j`) that change
-    /// their relative normal speed by `change`, shared by mass; a sleeping ball is not moved,
-    /// and the other takes all of it.
-    fn exchange_impulse(&self, balls: &mut [Ball], [i, j]: [usize; 2], n: Vec2, change: f64) {
-        let (mass_a, mass_b) = (mass(balls[i].radius), mass(balls[j].radius));
-        let total = mass_a + mass_b;
-        let (kick_a, kick_b) = match (self.asleep[i], self.asleep[j]) {
-            (true, _) => (0.0, change),
-            (_, true) => (change, 0.0),
-            _ => (change * mass_b / total, change * mass_a / total),
-        };
-        let a = &mut balls[i];
-        let velocity = a.velocity() + kick_a * n;
-        (a.vx, a.vy) = (velocity.x, velocity.y);
-        let b = &mut balls[j];
-        let velocity = b.velocity() - kick_b * n;
-        (b.vx, b.vy) = (velocity.x, velocity.y);
     }
 }
 
