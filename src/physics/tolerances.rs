@@ -34,6 +34,12 @@ pub(crate) const FLOOR_TOUCH_GAP: f64 = 1e-9;
 /// rest rule: as for floors, far above rounding and far below a pixel.
 pub(crate) const BALL_TOUCH_GAP: f64 = 1e-9;
 
+/// The most that Horner's rule can be off, as a share of `Σ|cᵢ·tⁱ|`, for the polynomials of
+/// degree ≤ 8 that exact mode evaluates (a bound of 2·8 roundings of 1.1e-16 each is 3.6e-15),
+/// with room to spare: a polynomial whose value now exceeds how far it can move by more than
+/// this share is positive wherever it is evaluated, so its roots need not be looked for.
+pub(crate) const HORNER_ROUNDING: f64 = 1e-14;
+
 /// How many of its estimated roundings either side of a straight line's root, found by one
 /// division, the bracket reaches that bisection narrows down to adjacent numbers: the division
 /// and the line's value each round a few times. Too narrow a bracket misses the root and the

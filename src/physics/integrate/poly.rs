@@ -5,13 +5,15 @@
 //! The method needs no formula per degree: a polynomial is monotone between the roots of its
 //! derivative, so on each of those pieces it crosses zero at most once, and bisection finds
 //! that crossing to the last bit. The derivative's roots are found the same way, one degree down.
+//! A polynomial further from zero than it can move in the interval (`reach`) has no crossing,
+//! and its derivatives' roots are not looked for.
 //!
 //! `+`, `−` and `·` work on polynomials and with numbers, so a squared distance reads
 //! `x·x + y·y − reach²` (`x * x + y * y - reach * reach`).
 
 use std::ops::{Add, Mul, Sub};
 
-use crate::physics::tolerances::LINE_ROOT_ROUNDINGS;
+use crate::physics::tolerances::{HORNER_ROUNDING, LINE_ROOT_ROUNDINGS};
 
 /// The highest degree held: RK4's flight is a quartic, and a squared distance along two
 /// such flights is of degree 8.
@@ -98,11 +100,14 @@ impl Poly {
     /// The first crossing below zero in `[0, end]` as two adjacent times: the last one still
     /// ≥ 0 and the first one below. Assumes `at(0) ≥ 0`.
     pub(crate) fn first_crossing(&self, end: f64) -> Option<(f64, f64)> {
+        if self.stays_positive(end) {
+            return None;
+        }
         if self.degree == 1 {
             return self.line_crossing(end);
         }
         let mut left = 0.0;
-        let derivative_roots = self.derivative().roots(0.0, end);
+        let derivative_roots = self.derivative().roots(end);
         for &right in derivative_roots.t[..derivative_roots.len]
             .iter()
             .chain([end].iter())
@@ -113,6 +118,20 @@ impl Poly {
             left = right;
         }
         None
+    }
+
+    /// Whether the value cannot fall below zero in `[0, end]`: then the search would find no
+    /// crossing, and the roots of the derivatives need not be found. Most near pairs of balls
+    /// are far enough apart for it.
+    fn stays_positive(&self, end: f64) -> bool {
+        self.c[0] > 0.0 && self.keeps_sign(end)
+    }
+
+    /// Whether the value keeps the sign it has at 0 everywhere in `[0, end]`, as evaluated: it
+    /// is further from zero than `reach` lets it move, with room for Horner's rounding.
+    fn keeps_sign(&self, end: f64) -> bool {
+        let (value, reach) = (self.c[0].abs(), self.reach(end));
+        value - reach > HORNER_ROUNDING * (value + reach)
     }
 
     /// `first_crossing` for a straight line: the root by one division, checked against its
@@ -139,17 +158,17 @@ impl Poly {
         Some(self.bisect(0.0, end.min(f64::MAX)))
     }
 
-    /// Every root strictly inside `(start, end)` where the sign changes, in increasing order.
-    fn roots(&self, start: f64, end: f64) -> Roots {
+    /// Every root strictly inside `(0, end)` where the sign changes, in increasing order.
+    fn roots(&self, end: f64) -> Roots {
         let mut roots = Roots {
             t: [0.0; MAX_DEGREE],
             len: 0,
         };
-        if self.degree == 0 {
+        if self.degree == 0 || self.keeps_sign(end) {
             return roots;
         }
-        let turns = self.derivative().roots(start, end);
-        let mut left = start;
+        let turns = self.derivative().roots(end);
+        let mut left = 0.0;
         for &right in turns.t[..turns.len].iter().chain([end].iter()) {
             let (a, b) = (self.at(left), self.at(right));
             if (a < 0.0) != (b < 0.0) && a != 0.0 && b != 0.0 {
@@ -326,6 +345,24 @@ mod tests {
             None,
             "zero stays zero"
         );
+    }
+
+    #[test]
+    fn the_bound_skips_the_search_only_where_no_crossing_can_be() {
+        // 1 − k·t² falls to 0 at 1/√k: within reach of [0, 1] only once k ≥ 1.
+        for k in [0.5, 0.999_999, 1.0, 1.5] {
+            let p = Poly::new(&[1.0, 0.0, -k]);
+            let (skipped, crossing) = (p.stays_positive(1.0), p.first_negative(1.0));
+            assert!(
+                !(skipped && crossing.is_some()),
+                "k = {k}: skipped though it crosses at {crossing:?}"
+            );
+            assert_eq!(
+                skipped,
+                k < 0.999_999_9,
+                "k = {k}: expected the bound to skip"
+            );
+        }
     }
 
     #[test]
