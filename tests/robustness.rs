@@ -487,7 +487,7 @@ fn assert_refused_for_time_within(list: &[&str], seconds: f64) {
 
 #[test]
 fn exact_collisions_with_rk4_and_substeps_are_refused_up_front_for_their_events() {
-    // Several seconds of collision events (about 9 µs each with RK4): the budget counts them.
+    // Several seconds of collision events (about 3 µs each with RK4): the budget counts them.
     let list = [
         "-p",
         "pile",

@@ -15,13 +15,12 @@ const NS_PER_BALL_STEP: f64 = 30.0;
 const NS_PER_COLLIDING_BALL_STEP: f64 = 400.0;
 /// Per event of exact mode (a bounce, a contact, a cell crossed), by integrator: the Euler
 /// methods fly each ball along a parabola, Verlet and RK4 along curves whose times of
-/// contact take longer to find. Measured on the physics alone of `--preset pile
-/// --collisions exact`, 100 frames, steps included: semi-implicit Euler 10,704 events,
-/// 1.0 to 1.9 µs each (explicit Euler 1.8 µs; 4 substeps 1.9 µs); Verlet 385,736 events,
-/// 9.3 to 9.8 µs; RK4 374,095 events, 9.8 to 12.9 µs, and with 4 substeps 694,796 events,
-/// 9.1 to 9.8 µs.
+/// contact take longer to find. Measured on `--preset pile --collisions exact` with
+/// `cargo run --release --example exact_pile_cost` (the physics alone, steps included, idle
+/// machine): semi-implicit Euler 10,704 events, 0.9 µs each (1.0 to 1.9 µs on a loaded
+/// one); Verlet 64,744 events, 2.9 µs; RK4 114,833 events, 3.1 µs.
 const NS_PER_EULER_EVENT: f64 = 1_300.0;
-const NS_PER_CURVED_EVENT: f64 = 9_500.0;
+const NS_PER_CURVED_EVENT: f64 = 3_000.0;
 /// Per floor per ball per step.
 const NS_PER_FLOOR_TEST: f64 = 10.0;
 /// Per ball or trail dot drawn, and per pixel of them (a frame that changed draws every ball;
