@@ -21,6 +21,8 @@ pub enum Work {
     Contacts,
     /// One ball moved by the lesson's own step, `Ball::step`.
     LessonStep,
+    /// One point added to one ball's trail by the general solvers.
+    TrailPoint,
     /// Pixels written while drawing a frame (cleared or covered by a circle).
     PixelsDrawn,
     /// Pixels of two frames compared to find what changed.
@@ -28,7 +30,7 @@ pub enum Work {
 }
 
 #[cfg(feature = "work-tally")]
-const KINDS: usize = 9;
+const KINDS: usize = 10;
 
 #[cfg(feature = "work-tally")]
 thread_local! {

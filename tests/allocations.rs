@@ -1,28 +1,43 @@
-//! Drawing and encoding reuse their buffers: once warmed up, more frames allocate nothing.
+//! Drawing and encoding reuse their buffers: once warmed up, more frames allocate nothing. And
+//! a trail takes the memory the memory budget counts for it.
 
 use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use bouncing_ball::gif::GifWriter;
+use bouncing_ball::physics::{Trail, Vec2};
 use bouncing_ball::render::{Canvas, Renderer};
 use bouncing_ball::scene::file as scene_file;
 use bouncing_ball::testing::queue_frames;
 
-/// The system allocator, counting every allocation.
+/// The system allocator, counting every allocation, and the bytes each thread holds.
 struct Counting;
 
 static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
 
+thread_local! {
+    /// Bytes allocated minus bytes freed on this thread (tests run side by side on threads).
+    static BYTES_HELD: Cell<isize> = const { Cell::new(0) };
+}
+
+fn hold(bytes: isize) {
+    BYTES_HELD.with(|held| held.set(held.get() + bytes));
+}
+
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
         ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        hold(layout.size() as isize);
         unsafe { System.alloc(layout) }
     }
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        hold(-(layout.size() as isize));
         unsafe { System.dealloc(ptr, layout) }
     }
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
         ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        hold(new_size as isize - layout.size() as isize);
         unsafe { System.realloc(ptr, layout, new_size) }
     }
 }
@@ -58,4 +73,24 @@ fn drawing_and_encoding_frames_allocate_nothing_once_warmed_up() {
         during < 30,
         "{during} allocations over {counted} frames: something allocates per frame or per queue"
     );
+}
+
+#[test]
+fn a_full_trail_holds_exactly_the_bytes_the_memory_budget_counts_for_it() {
+    // The budget refuses a scene whose memory would pass its limit before any work, from
+    // `Trail::heap_bytes`: it must be what a trail really takes once it has cycled.
+    for capacity in [0, 1, 2, 3, 4, 5, 7, 8, 20, 100] {
+        let before = BYTES_HELD.with(Cell::get);
+        let mut trail = Trail::new(capacity);
+        for i in 0..3 * capacity + 5 {
+            trail.push(Vec2::new(i as f64, 0.0));
+        }
+        let held = BYTES_HELD.with(Cell::get) - before;
+        let counted = Trail::heap_bytes(capacity);
+        assert_eq!(
+            held as u64, counted,
+            "a full trail of {capacity} points holds {held} bytes; the budget counts {counted}"
+        );
+        drop(trail);
+    }
 }

@@ -192,6 +192,32 @@ fn an_effect_the_scene_does_not_call_for_never_runs() {
 }
 
 #[test]
+fn a_scene_whose_balls_keep_no_trail_never_records_a_trail_point() {
+    // Drag moves the balls with the general solvers, which record the trails after the step.
+    let scene = scene_file::preset("drag", 1).unwrap();
+    let frames: u32 = 100;
+    let points_recorded = |scene: &Scene| {
+        let mut simulation = scene.simulation();
+        work::reset();
+        for _ in 0..frames {
+            simulation.step();
+        }
+        work::count(Work::TrailPoint)
+    };
+    let expected = u64::from(frames) * scene.balls.len() as u64;
+    assert_eq!(points_recorded(&scene), expected, "drag with its trails");
+    let mut without = scene.clone();
+    for ball in &mut without.balls {
+        ball.trail = 0;
+    }
+    assert_eq!(
+        points_recorded(&without),
+        0,
+        "drag with no ball keeping a trail"
+    );
+}
+
+#[test]
 fn a_scene_without_ball_collisions_never_builds_the_grid_or_the_contact_solver() {
     // The grid lives inside the contact solver or the event-driven step, which exist only when the
     // scene asks for ball-ball collisions.

@@ -137,7 +137,7 @@ impl Trail {
 
     /// The memory a trail of `capacity` points takes besides the ball once full, bytes: its
     /// ring and the ring's buffer (a power of two above `capacity`).
-    pub(crate) fn heap_bytes(capacity: usize) -> u64 {
+    pub fn heap_bytes(capacity: usize) -> u64 {
         if capacity == 0 {
             return 0;
         }

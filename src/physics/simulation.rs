@@ -118,6 +118,7 @@ impl Simulation {
         if self.trails {
             for ball in &mut self.balls {
                 ball.record_trail();
+                tally(Work::TrailPoint);
             }
         }
     }
