@@ -6,6 +6,10 @@ use bouncing_ball::physics::effects::Effects;
 use bouncing_ball::physics::floor::Floor;
 use bouncing_ball::physics::motion::Motion;
 use bouncing_ball::physics::Vec2;
+use bouncing_ball::Scene;
+use common::{lesson_scene, white_ball};
+
+mod common;
 
 fn floor_only(floor: Floor, gravity: Option<Vec2>) -> Effects {
     Effects {
@@ -150,4 +154,92 @@ fn a_ball_struck_through_a_floor_within_one_step_is_put_back_on_its_side_and_bou
     let mut resting = Ball::new(50.0, 97.0, 0.0, 0.1, 4.0, 0);
     floor.undo_crossing(&mut resting, Vec2::new(50.0, 96.9));
     assert_eq!((resting.y, resting.vy), (97.0, 0.1), "left alone");
+}
+
+/// One ball of radius 10 starting at `(x, y)` above a level floor from x 100 to 200 at y 150
+/// (its normal points up), under `gravity`, with ball-ball collisions on, so the contact
+/// solver carries the floor contact; the ball after `frames` frames.
+fn on_a_floor_with_the_contact_solver(x: f64, y: f64, gravity: f64, frames: u32) -> Ball {
+    let scene = Scene {
+        balls: vec![white_ball(x, y, 0.0, 0.0, 10.0)],
+        gravity: Some(Vec2::new(0.0, gravity)),
+        walls: Some(0.5),
+        floors: vec![Floor {
+            from: Vec2::new(100.0, 150.0),
+            to: Vec2::new(200.0, 150.0),
+            damping: 0.5,
+        }],
+        ball_collisions: Some(0.5),
+        ..lesson_scene()
+    };
+    let mut simulation = scene.simulation();
+    assert!(simulation.has_contact_solver(), "the contact solver runs");
+    for _ in 0..frames {
+        simulation.step();
+    }
+    simulation.balls()[0].clone()
+}
+
+#[test]
+fn a_ball_dropped_on_a_floor_in_the_contact_solver_comes_to_rest_touching_it() {
+    let ball = on_a_floor_with_the_contact_solver(150.0, 50.0, 0.5, 600);
+    // At rest on the face: the centre one radius above the floor, within the solver's
+    // allowed overlap (0.01 r), and still.
+    let expected = 150.0 - 10.0;
+    assert!(
+        (ball.y - expected).abs() <= 0.1,
+        "resting on the floor: expected y {expected} ± 0.1, got {}",
+        ball.y
+    );
+    assert!(
+        ball.vx.hypot(ball.vy) < 1e-3 && ball.x == 150.0,
+        "at rest where it fell: x {}, v ({}, {})",
+        ball.x,
+        ball.vx,
+        ball.vy
+    );
+}
+
+#[test]
+fn a_ball_landing_on_a_floors_end_point_in_the_contact_solver_rolls_off_it() {
+    // Dropped 5 px past the right end: the end point pushes it outwards, away from its centre,
+    // so it slides off the corner and falls to the bottom of the box (y 240 − r).
+    let ball = on_a_floor_with_the_contact_solver(205.0, 50.0, 0.5, 600);
+    let bottom = 240.0 - 10.0;
+    assert!(
+        (ball.y - bottom).abs() <= 0.1,
+        "fallen past the end to the bottom: expected y {bottom} ± 0.1, got ({}, {})",
+        ball.x,
+        ball.y
+    );
+}
+
+#[test]
+fn a_ball_centred_exactly_on_a_floor_in_the_contact_solver_is_pushed_out_along_its_normal() {
+    // No direction from the floor to the centre: the face's normal (up here) is the way out.
+    let ball = on_a_floor_with_the_contact_solver(150.0, 150.0, 0.0, 60);
+    assert!(
+        ball.y <= 140.0 + 0.1,
+        "pushed up out of the floor: expected y <= 140.1, got {}",
+        ball.y
+    );
+}
+
+#[test]
+fn a_ball_starting_a_step_centred_on_a_floors_line_is_pushed_out_on_the_side_it_moves_to() {
+    // Its centre starts on the line of a level floor at y = 100 and moves 2 px up: it came
+    // from no side, so the side it moves to is its side, and it ends touching the face there
+    // (y = 100 − r), still moving away.
+    let floor = Floor {
+        from: Vec2::new(0.0, 100.0),
+        to: Vec2::new(200.0, 100.0),
+        damping: 0.5,
+    };
+    let mut ball = Ball::new(50.0, 100.0, 0.0, -2.0, 5.0, 0);
+    Motion::default().advance(&mut ball, &floor_only(floor, None));
+    assert_eq!(
+        (ball.y, ball.vy),
+        (95.0, -2.0),
+        "expected touching the face above (y 95), still moving up at 2 px/frame"
+    );
 }

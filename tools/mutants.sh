@@ -1,16 +1,23 @@
 #!/usr/bin/env bash
 # Mutation testing, one group of files at a time (docs/tests.md has the scores). cargo-mutants
-# changes one operator or return value at a time and runs the tests that could notice it; each
-# group runs the library's unit tests and the test files that exercise its code, so that a
-# mutant builds and tests in seconds rather than the whole suite's minute.
+# changes one operator or return value at a time and runs the tests that could notice it. Each
+# group runs the test files that exercise its code (and the library's unit tests where its
+# files have some), so that a mutant builds and tests in seconds rather than the whole suite's
+# minute:
 #
 #   bash tools/mutants.sh lesson            # the lesson's physics: ball, floor, simulation
 #   bash tools/mutants.sh render            # circles, trail and palette
 #   bash tools/mutants.sh gif               # LZW, frame deltas, transparency
 #   bash tools/mutants.sh solvers 0         # integrators, contacts, events: shard 0 of 4
 #
+# Then what those tests missed is tried against the whole suite (all but the doctests); cargo
+# mutants' --iterate skips what was caught:
+#
+#   bash tools/mutants.sh lesson --iterate --all-tests
+#
 # Extra arguments go to cargo-mutants (for example -j2, or --list). Results land in
-# target/mutants-GROUP/mutants.out (GROUP-SHARD for the solvers) (caught.txt, missed.txt, timeout.txt, unviable.txt).
+# target/mutants-GROUP/mutants.out (target/mutants-solvers-SHARD/ for the solvers): caught.txt,
+# missed.txt, timeout.txt, unviable.txt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 group=${1:?usage: tools/mutants.sh lesson|render|gif|solvers SHARD [cargo-mutants args]}
@@ -20,6 +27,7 @@ physics_tests="accuracy allocations ball collisions contacts exact_contacts floo
     off_canvas pitfalls presets properties scenes sleep stability unchanged_frames"
 picture_tests="docs_images encode golden lesson_pixels off_canvas plot presets unchanged_frames"
 sample=()
+unit_tests=()
 out=target/mutants-$group
 case $group in
 lesson)
@@ -27,6 +35,7 @@ lesson)
     tests=$physics_tests ;;
 render)
     files=(src/render/ellipse.rs src/render/raster.rs src/render/palette.rs)
+    unit_tests=(--cargo-arg=--lib)
     tests=$picture_tests ;;
 gif)
     files=(src/gif/lzw.rs src/gif/delta.rs src/gif/transparency.rs)
@@ -38,16 +47,24 @@ solvers)
     files=('src/physics/integrate/**' 'src/physics/contacts/**' 'src/physics/events/**')
     sample=(--shard "$shard/4" --sharding round-robin)
     out=$out-$shard
+    unit_tests=(--cargo-arg=--lib)
     tests=$physics_tests ;;
 *)
     echo "tools/mutants.sh: unknown group '$group' (lesson, render, gif or solvers)" >&2
     exit 2 ;;
 esac
 
-args=(--output "$out" --cargo-arg=--lib)
-for test in $tests; do
-    args+=("--cargo-arg=--test=$test")
-done
+args=(--output "$out")
+if [ "${1:-}" = --iterate ] && [ "${2:-}" = --all-tests ]; then
+    # Every test but the doctests, on what the group's own tests missed.
+    shift 2
+    args+=(--iterate --cargo-arg=--lib --cargo-arg=--tests)
+else
+    args+=("${unit_tests[@]}")
+    for test in $tests; do
+        args+=("--cargo-arg=--test=$test")
+    done
+fi
 for file in "${files[@]}"; do
     args+=(--file "$file")
 done
