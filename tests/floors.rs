@@ -243,3 +243,52 @@ fn a_ball_starting_a_step_centred_on_a_floors_line_is_pushed_out_on_the_side_it_
         "expected touching the face above (y 95), still moving up at 2 px/frame"
     );
 }
+
+/// A level floor from x 0 to 200 at y 100 (its normal points up), damping 0.5.
+fn level_floor() -> Floor {
+    Floor {
+        from: Vec2::new(0.0, 100.0),
+        to: Vec2::new(200.0, 100.0),
+        damping: 0.5,
+    }
+}
+
+#[test]
+fn a_ball_that_ends_a_step_exactly_touching_a_floor_is_not_reflected_until_it_overlaps() {
+    // As at the walls: touching is not yet a contact. 3 px/frame down from 8 px above the
+    // face's contact line (radius 5): exact in binary.
+    let mut ball = Ball::new(50.0, 92.0, 0.0, 3.0, 5.0, 0);
+    Motion::default().advance(&mut ball, &floor_only(level_floor(), None));
+    assert_eq!(
+        (ball.y, ball.vy),
+        (95.0, 3.0),
+        "expected touching the face (y 95) and still falling at 3 px/frame"
+    );
+}
+
+#[test]
+fn a_ball_touching_a_floors_face_that_slides_past_its_end_leaves_the_face() {
+    // It starts the step touching the face near the right end and ends with its centre past
+    // the end, exactly one radius from the end point (a 3-4-5 triangle): no contact with the
+    // face, which its centre no longer faces, nor with the end point, which it only touches.
+    let mut ball = Ball::new(199.0, 95.0, 4.0, 1.0, 5.0, 0);
+    Motion::default().advance(&mut ball, &floor_only(level_floor(), None));
+    assert_eq!(
+        (ball.position(), ball.velocity()),
+        (Vec2::new(203.0, 96.0), Vec2::new(4.0, 1.0)),
+        "expected to move on untouched"
+    );
+}
+
+#[test]
+fn a_ball_struck_exactly_onto_a_floors_line_is_put_back_on_the_side_it_came_from() {
+    // Its centre went from (10, 90) to (30, 100): it ends on the line, not across it, but
+    // overlapping by a whole radius, so it goes back up, touching, its normal speed reflected.
+    let mut ball = Ball::new(30.0, 100.0, 2.0, 10.0, 4.0, 0);
+    level_floor().undo_crossing(&mut ball, Vec2::new(10.0, 90.0));
+    assert_eq!(
+        (ball.position(), ball.velocity()),
+        (Vec2::new(30.0, 96.0), Vec2::new(2.0, -5.0)),
+        "expected touching the face (y 96) with vy −0.5 × 10"
+    );
+}
