@@ -106,30 +106,33 @@ fn a_ball_resting_on_a_slope_does_not_sink_into_it() {
 
 #[test]
 fn a_ball_hitting_an_end_point_bounces_off_it_as_off_a_point() {
-    // The segment ends at (100, 100); the ball comes straight down onto that point.
+    // The segment runs from (0, 100) to (100, 100); the ball comes straight down 4 px past
+    // one end, then past the other, and each time bounces off that end, away from it.
     let floor = Floor {
         from: Vec2::new(0.0, 100.0),
         to: Vec2::new(100.0, 100.0),
         damping: 1.0,
     };
-    let mut ball = Ball::new(104.0, 80.0, 0.0, 14.0, 10.0, 0);
-    Motion::default().advance(&mut ball, &floor_only(floor, None));
-    let distance = (ball.x - 100.0).hypot(ball.y - 100.0);
-    assert!(
-        (distance - 10.0).abs() < 1e-9,
-        "pushed out to touch the end point: expected 10, got {distance}"
-    );
-    assert!(
-        ball.vy < 0.0 && ball.vx > 0.0,
-        "deflected up and away from the point: v = ({}, {})",
-        ball.vx,
-        ball.vy
-    );
-    let speed = ball.vx.hypot(ball.vy);
-    assert!(
-        (speed - 14.0).abs() < 1e-9,
-        "elastic: speed kept, expected 14, got {speed}"
-    );
+    for (end, outwards) in [(floor.to, 1.0), (floor.from, -1.0)] {
+        let mut ball = Ball::new(end.x + 4.0 * outwards, 80.0, 0.0, 14.0, 10.0, 0);
+        Motion::default().advance(&mut ball, &floor_only(floor, None));
+        let distance = (ball.x - end.x).hypot(ball.y - end.y);
+        assert!(
+            (distance - 10.0).abs() < 1e-9,
+            "pushed out to touch the end point {end:?}: expected 10, got {distance}"
+        );
+        assert!(
+            ball.vy < 0.0 && ball.vx * outwards > 0.0,
+            "deflected up and away from the point {end:?}: v = ({}, {})",
+            ball.vx,
+            ball.vy
+        );
+        let speed = ball.vx.hypot(ball.vy);
+        assert!(
+            (speed - 14.0).abs() < 1e-9,
+            "elastic: speed kept, expected 14, got {speed}"
+        );
+    }
 }
 
 #[test]
@@ -290,5 +293,27 @@ fn a_ball_struck_exactly_onto_a_floors_line_is_put_back_on_the_side_it_came_from
         (ball.position(), ball.velocity()),
         (Vec2::new(30.0, 96.0), Vec2::new(2.0, -5.0)),
         "expected touching the face (y 96) with vy −0.5 × 10"
+    );
+}
+
+#[test]
+fn a_ball_ending_exactly_between_the_ends_of_a_short_floor_bounces_off_the_far_end() {
+    // A floor 10 px long, a ball of radius 10 coming down from the left at (30, 15) px/frame:
+    // its path meets the floor's line before the floor begins, and its centre ends at (5, 95),
+    // exactly above the middle, overlapping both ends alike. The tie goes to `to`, so the
+    // ball is pushed away from it, left and up (one rule, so one run always gives one result).
+    let floor = Floor {
+        from: Vec2::new(0.0, 100.0),
+        to: Vec2::new(10.0, 100.0),
+        damping: 1.0,
+    };
+    let mut ball = Ball::new(-25.0, 80.0, 30.0, 15.0, 10.0, 0);
+    Motion::default().advance(&mut ball, &floor_only(floor, None));
+    let distance = (ball.x - 10.0).hypot(ball.y - 100.0);
+    assert!(
+        (distance - 10.0).abs() < 1e-9 && ball.x < 5.0 && ball.y < 95.0,
+        "pushed left and up off the end (10, 100) to touch it: got ({}, {}), {distance} from it",
+        ball.x,
+        ball.y
     );
 }
