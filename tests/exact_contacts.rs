@@ -133,9 +133,16 @@ fn newtons_cradle_sends_exactly_one_ball_out_at_the_incoming_speed() {
         exact(Integrator::SemiImplicitEuler),
         Some(1.0),
     );
+    let mut collisions = 0;
     for _ in 0..20 {
         simulation.step();
+        collisions += simulation
+            .event_counts()
+            .expect("exact mode counts events")
+            .ball_collisions;
     }
+    // The impulse runs down the row one pair at a time: six balls, five collisions.
+    assert_eq!(collisions, 5, "ball-ball collisions counted over the run");
     let balls = simulation.balls();
     for (k, b) in balls.iter().enumerate() {
         let want = if k == 4 { 5.0 } else { 0.0 };

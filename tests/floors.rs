@@ -297,6 +297,32 @@ fn a_ball_struck_exactly_onto_a_floors_line_is_put_back_on_the_side_it_came_from
 }
 
 #[test]
+fn a_ball_struck_across_a_floor_is_put_back_only_where_its_path_met_the_segment() {
+    // From (90, 90) to (150, 105): the path meets the line at 10 / 15 of the way, x 130, on
+    // the segment, so the ball goes back up (y 100 − 4), its normal speed reflected. Through
+    // the same line past the end (the segment cut to x 120), the ball passed beside the floor
+    // and is left where it is.
+    let mut ball = Ball::new(150.0, 105.0, 60.0, 15.0, 4.0, 0);
+    level_floor().undo_crossing(&mut ball, Vec2::new(90.0, 90.0));
+    assert_eq!(
+        (ball.position(), ball.velocity()),
+        (Vec2::new(150.0, 96.0), Vec2::new(60.0, -7.5)),
+        "crossed at x 130: expected put back at y 96 with vy −0.5 × 15"
+    );
+    let short = Floor {
+        to: Vec2::new(120.0, 100.0),
+        ..level_floor()
+    };
+    let mut beside = Ball::new(150.0, 105.0, 60.0, 15.0, 4.0, 0);
+    short.undo_crossing(&mut beside, Vec2::new(90.0, 90.0));
+    assert_eq!(
+        (beside.position(), beside.velocity()),
+        (Vec2::new(150.0, 105.0), Vec2::new(60.0, 15.0)),
+        "crossed the line at x 130, past the end at 120: expected left alone"
+    );
+}
+
+#[test]
 fn a_ball_ending_exactly_between_the_ends_of_a_short_floor_bounces_off_the_far_end() {
     // A floor 10 px long, a ball of radius 10 coming down from the left at (30, 15) px/frame:
     // its path meets the floor's line before the floor begins, and its centre ends at (5, 95),
