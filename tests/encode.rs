@@ -518,3 +518,26 @@ fn the_gif_is_the_same_bytes_on_one_thread_and_on_four() {
     };
     assert!(render("1") == render("4"), "the bytes differ");
 }
+
+#[test]
+#[should_panic(expected = "a fork into a full dictionary is taken before the next coding")]
+fn a_fork_into_a_full_dictionary_taken_after_another_coding_is_refused() {
+    // The coder keeps a full dictionary only until its next coding: a fork into it taken later
+    // would start from another image's strings and write a wrong GIF, so it is refused.
+    let mut random = Random::new(5);
+    let noise: Vec<u8> = (0..200 * 150)
+        .map(|_| (random.next_u64() % 16) as u8)
+        .collect();
+    let (mut lzw, mut first, mut other, mut resumed) = (Lzw::new(), vec![], vec![], vec![]);
+    lzw.compress(4, &noise, Choices::GREEDY, usize::MAX, &mut first);
+    let fork = lzw.forks().full.expect("noise fills the dictionary");
+    lzw.compress(4, &noise[..100], Choices::GREEDY, usize::MAX, &mut other);
+    lzw.compress_from(
+        fork,
+        Choices::KEEP_FULL,
+        &noise,
+        &first,
+        usize::MAX,
+        &mut resumed,
+    );
+}
