@@ -350,25 +350,30 @@ fn decode_lzw(width: u16, height: u16, colours: usize, data: &[u8]) -> Vec<u8> {
 }
 
 #[test]
-fn lzw_with_a_small_dictionary_decodes_to_the_same_indices_for_every_code_size() {
+fn lzw_decodes_to_the_same_indices_for_every_code_size_and_dictionary_choice() {
+    // 400x300 px of noise fill even the 4096-code dictionary many times over, so each choice
+    // reaches its size: cleared there (greedy, small) or kept full to the end.
     let mut random = Random::new(9);
     let mut lzw = Lzw::new();
     let mut data = Vec::new();
     for colours in [2, 3, 5, 16, 129, 256] {
-        let frame = random_frame(200, 150, colours, &mut random);
+        let noise: Vec<u8> = (0..400 * 300)
+            .map(|_| (random.next_u64() % colours as u64) as u8)
+            .collect();
         let code_size = min_code_size(colours);
-        let small = Choices::SMALL;
-        let most = lzw.compress(code_size, frame.as_raw(), small, usize::MAX, &mut data);
-        assert_eq!(
-            most,
-            Some(small.max_codes),
-            "{colours} colours: the small dictionary fills, and is cleared, at its size"
-        );
-        let decoded = decode_lzw(200, 150, colours, &data);
-        assert!(
-            decoded == *frame.as_raw(),
-            "{colours} colours: decoded indices differ"
-        );
+        for choices in [Choices::GREEDY, Choices::SMALL, Choices::KEEP_FULL] {
+            let most = lzw.compress(code_size, &noise, choices, usize::MAX, &mut data);
+            assert_eq!(
+                most,
+                Some(choices.max_codes),
+                "{colours} colours, {choices:?}: the dictionary reaches its size"
+            );
+            let decoded = decode_lzw(400, 300, colours, &data);
+            assert!(
+                decoded == noise,
+                "{colours} colours, {choices:?}: decoded indices differ"
+            );
+        }
     }
 }
 
