@@ -6,7 +6,9 @@
 pub use crate::check::animation::lzw_indices;
 pub use crate::gif::encoder::{queue_frames, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
 pub use crate::gif::interlace::interlace;
-pub use crate::gif::transparency::{mark_mixed_stretches, transparent_index};
+pub use crate::gif::transparency::{
+    mark_mixed_stretches, mark_unchanged, mixed_neighbours, transparent_index,
+};
 pub use crate::plot::record::Recording;
 pub use crate::render::dirty::Rect;
 pub use crate::render::ellipse::fill_circle;

@@ -14,7 +14,9 @@ use bouncing_ball::render::Palette;
 use bouncing_ball::render::Renderer;
 use bouncing_ball::scene::random::Random;
 use bouncing_ball::testing::interlace;
-use bouncing_ball::testing::{mark_mixed_stretches, transparent_index};
+use bouncing_ball::testing::{
+    mark_mixed_stretches, mark_unchanged, mixed_neighbours, transparent_index,
+};
 use bouncing_ball::testing::{queue_frames, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
 use bouncing_ball::{run, BallSpec, Job, OutputKind, Scene};
 use common::{decode_gif, lesson_scene, render_frames};
@@ -483,6 +485,55 @@ fn only_unchanged_stretches_of_more_than_one_colour_become_transparent() {
     // 1 1 is one colour: kept. 3 3 4 4 mixes two: transparent. 2 2 is one colour: kept.
     assert_eq!(out, [1, 1, 6, 0, 0, 0, 0, 8, 2, 2]);
     assert_eq!(marked, 4);
+}
+
+#[test]
+fn marking_every_unchanged_pixel_marks_exactly_those_and_counts_them() {
+    // The same rows as above: only columns 2 and 7 changed, and every other pixel is marked.
+    let before = [1, 1, 5, 3, 3, 4, 4, 9, 2, 2];
+    let now = [1, 1, 6, 3, 3, 4, 4, 8, 2, 2];
+    let mut out = Vec::new();
+    let marked = mark_unchanged(&now, &before, 0, &mut out);
+    assert_eq!(out, [0, 0, 6, 0, 0, 0, 0, 8, 0, 0]);
+    assert_eq!(marked, 8, "pixels marked");
+}
+
+/// How many runs of one index `pixels` holds (0 for none).
+fn runs(pixels: &[u8]) -> usize {
+    let changes = pixels.windows(2).filter(|pair| pair[0] != pair[1]).count();
+    usize::from(!pixels.is_empty()) + changes
+}
+
+#[test]
+fn the_unchanged_pairs_of_two_colours_are_counted_and_bound_the_runs_marking_removes() {
+    // The encoder tries a marking only if it could remove enough runs; it bounds that by
+    // the neighbouring pairs of unchanged pixels of two colours. The count must be exact
+    // (counted here pair by pair, on rows shorter and longer than its blocks of 255) and
+    // the bound must hold.
+    let mut random = Random::new(17);
+    for len in [0, 1, 2, 3, 254, 255, 256, 257, 1000] {
+        for colours in [2, 3] {
+            let mut pick = || (random.next_u64() % colours) as u8;
+            let before: Vec<u8> = (0..len).map(|_| pick()).collect();
+            let now: Vec<u8> = before
+                .iter()
+                .map(|&b| if pick() == 0 { pick() } else { b })
+                .collect();
+            let by_hand = (1..len)
+                .filter(|&i| now[i - 1] == before[i - 1] && now[i] == before[i])
+                .filter(|&i| now[i - 1] != now[i])
+                .count();
+            let counted = mixed_neighbours(&now, &before);
+            assert_eq!(counted, by_hand, "{len} pixels of {colours} colours");
+            let mut marked = Vec::new();
+            mark_mixed_stretches(&now, &before, colours as u8, &mut marked);
+            let removed = runs(&now).saturating_sub(runs(&marked));
+            assert!(
+                removed <= counted,
+                "{len} pixels of {colours} colours: marking removed {removed} runs, over the bound {counted}"
+            );
+        }
+    }
 }
 
 #[test]

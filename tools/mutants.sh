@@ -6,7 +6,8 @@
 # minute:
 #
 #   bash tools/mutants.sh lesson            # the lesson's physics: ball, floor, simulation
-#   bash tools/mutants.sh render            # circles, trail and palette
+#   bash tools/mutants.sh render            # circles and trail
+#   bash tools/mutants.sh palette           # the frames' colour table
 #   bash tools/mutants.sh gif               # LZW, frame deltas, transparency
 #   bash tools/mutants.sh solvers 0         # integrators, contacts, events: shard 0 of 4
 #
@@ -20,7 +21,7 @@
 # missed.txt, timeout.txt, unviable.txt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-group=${1:?usage: tools/mutants.sh lesson|render|gif|solvers SHARD [cargo-mutants args]}
+group=${1:?usage: tools/mutants.sh lesson|render|palette|gif|solvers SHARD [cargo-mutants args]}
 shift
 
 physics_tests="accuracy allocations ball collisions contacts exact_contacts floors golden lesson_pixels lesson_step
@@ -34,8 +35,11 @@ lesson)
     files=(src/physics/ball.rs src/physics/floor.rs src/physics/simulation.rs)
     tests=$physics_tests ;;
 render)
-    files=(src/render/ellipse.rs src/render/raster.rs src/render/palette.rs)
+    files=(src/render/ellipse.rs src/render/raster.rs)
     unit_tests=(--cargo-arg=--lib)
+    tests=$picture_tests ;;
+palette)
+    files=(src/render/palette.rs)
     tests=$picture_tests ;;
 gif)
     files=(src/gif/lzw.rs src/gif/delta.rs src/gif/transparency.rs)
@@ -50,7 +54,7 @@ solvers)
     unit_tests=(--cargo-arg=--lib)
     tests=$physics_tests ;;
 *)
-    echo "tools/mutants.sh: unknown group '$group' (lesson, render, gif or solvers)" >&2
+    echo "tools/mutants.sh: unknown group '$group' (lesson, render, palette, gif or solvers)" >&2
     exit 2 ;;
 esac
 

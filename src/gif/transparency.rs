@@ -48,12 +48,7 @@ pub fn mark_mixed_stretches(
 /// Writes `current` into `out` (cleared first) with every unchanged pixel set to
 /// `transparent`: the better marking when what stays the same is more varied than what
 /// changes (a heap of resting balls round a few moving ones). Returns how many it marked.
-pub(crate) fn mark_unchanged(
-    current: &[u8],
-    beneath: &[u8],
-    transparent: u8,
-    out: &mut Vec<u8>,
-) -> usize {
+pub fn mark_unchanged(current: &[u8], beneath: &[u8], transparent: u8, out: &mut Vec<u8>) -> usize {
     out.clear();
     let mut marked = 0;
     out.extend(current.iter().zip(beneath).map(|(&now, &before)| {
@@ -70,7 +65,7 @@ pub(crate) fn mark_unchanged(
 /// How many neighbouring pairs of pixels (in reading order) are both unchanged and of two
 /// colours: marking removes at most this many runs, so it is the cheap test of whether
 /// marking can pay at all (on the lesson it never can).
-pub(crate) fn mixed_neighbours(current: &[u8], beneath: &[u8]) -> usize {
+pub fn mixed_neighbours(current: &[u8], beneath: &[u8]) -> usize {
     count_neighbours(current, beneath, |[now, next, under_now, under_next]| {
         (now == under_now) & (next == under_next) & (now != next)
     })
@@ -85,6 +80,9 @@ pub(crate) fn count_neighbours(
     pair: impl Fn([u8; 4]) -> bool,
 ) -> usize {
     let len = current.len().min(beneath.len()).saturating_sub(1);
+    if len == 0 {
+        return 0; // no pair (and an empty row has no `[1..]`)
+    }
     let (now, next) = (current[..len].chunks(255), current[1..=len].chunks(255));
     let (under_now, under_next) = (beneath[..len].chunks(255), beneath[1..=len].chunks(255));
     now.zip(next)
