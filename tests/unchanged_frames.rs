@@ -7,6 +7,7 @@ mod common;
 use bouncing_ball::gif::GifWriter;
 use bouncing_ball::render::{Canvas, Damage, IndexedFrame, Renderer};
 use bouncing_ball::scene::file as scene_file;
+use bouncing_ball::testing::fill_circle;
 use bouncing_ball::testing::work::{self, Work};
 use bouncing_ball::testing::Rect;
 use bouncing_ball::testing::MOST_BUSY_FRAMES;
@@ -272,4 +273,27 @@ fn a_still_scene_longer_than_a_gif_delay_can_hold_keeps_its_time() {
         delays.iter().any(|&d| d > 60_000),
         "the still frames merge into long delays: {delays:?}"
     );
+}
+
+#[test]
+fn the_pixels_drawn_tally_counts_exactly_the_pixels_a_circle_fills() {
+    // The tally behind "a frame where nothing moved draws no pixel" must count pixels, not
+    // rows or something near: whole circles, and circles cut by every edge of the canvas.
+    for (x, y, radius) in [
+        (20.0, 15.0, 7.3),
+        (0.5, 14.0, 9.0),
+        (40.0, 29.0, 6.0),
+        (3.0, 3.0, 12.5),
+    ] {
+        let mut frame = IndexedFrame::new(40, 30);
+        work::reset();
+        fill_circle(&mut frame, x, y, radius, 1);
+        let filled = frame.pixels().filter(|p| p[0] == 1).count() as u64;
+        assert!(filled > 0, "circle ({x}, {y}) r {radius} fills something");
+        assert_eq!(
+            work::count(Work::PixelsDrawn),
+            filled,
+            "circle ({x}, {y}) r {radius}: pixels drawn as tallied and as filled"
+        );
+    }
 }

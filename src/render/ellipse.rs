@@ -57,7 +57,10 @@ pub(crate) fn fill_box(frame: &mut IndexedFrame, pixels: PixelBox, index: u8, cl
     };
     for (half_width, grid_row) in QuarterTrace::new(a, b) {
         fill_row(y0 + (b + grid_row) / 2, half_width);
-        fill_row(y0 + (b - grid_row) / 2, half_width);
+        if grid_row != 0 {
+            // Grid row 0 is the middle pixel row (of an even box): filled once, not twice.
+            fill_row(y0 + (b - grid_row) / 2, half_width);
+        }
     }
 }
 
@@ -220,6 +223,58 @@ mod tests {
             filled(8, 3.0, 3.0, 0.4),
             vec![(2, 2), (3, 2), (2, 3), (3, 3)]
         );
+    }
+
+    #[test]
+    fn a_circle_whose_box_ends_short_of_the_canvas_or_is_too_wide_has_no_box() {
+        // An 8 x 8 canvas. Truncation puts an edge above -1 on pixel 0, so a box whose right
+        // edge is exactly -1 ends off the canvas, as does one starting exactly at column 8;
+        // the same for rows. Each of these lies beside the canvas on one side only.
+        let frame = IndexedFrame::new(8, 8);
+        for (x, y, r) in [
+            (-3.0, 4.0, 2.0),
+            (10.0, 4.0, 2.0),
+            (4.0, -3.0, 2.0),
+            (4.0, 10.0, 2.0),
+        ] {
+            assert_eq!(PixelBox::of(x, y, r, &frame), None, "({x}, {y}) r {r}");
+        }
+        // Just inside those edges, a box.
+        for (x, y, r) in [
+            (-2.5, 4.0, 2.0),
+            (9.5, 4.0, 2.0),
+            (4.0, -2.5, 2.0),
+            (4.0, 9.5, 2.0),
+        ] {
+            assert!(PixelBox::of(x, y, r, &frame).is_some(), "({x}, {y}) r {r}");
+        }
+        // A diameter of MAX_DIAMETER is too wide; just under it is drawn.
+        let r = MAX_DIAMETER / 2.0;
+        assert_eq!(PixelBox::of(4.0, 4.0, r, &frame), None, "r {r}");
+        assert!(
+            PixelBox::of(4.0, 4.0, r - 0.5, &frame).is_some(),
+            "r {r} - 0.5"
+        );
+    }
+
+    #[test]
+    fn the_part_of_a_box_on_the_canvas_is_the_box_cut_to_the_canvas() {
+        let frame = IndexedFrame::new(8, 8);
+        let on = |x0, y0, a, b| PixelBox { x0, y0, a, b }.on(&frame);
+        let rect = |left, top, width, height| Rect {
+            left,
+            top,
+            width,
+            height,
+        };
+        // Columns 2..=5 and rows 3..=4: inside, whole.
+        assert_eq!(on(2, 3, 3, 1), Some(rect(2, 3, 4, 2)));
+        // Columns 5..=9 and rows -2..=1: cut at the right and the top.
+        assert_eq!(on(5, -2, 4, 3), Some(rect(5, 0, 3, 2)));
+        // Ending at column -1 or row -1, or starting at column or row 8: nothing on it.
+        for (x0, y0) in [(-3, 2), (2, -3), (8, 2), (2, 8)] {
+            assert_eq!(on(x0, y0, 2, 2), None, "box at ({x0}, {y0})");
+        }
     }
 
     #[test]
