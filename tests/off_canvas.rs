@@ -68,6 +68,20 @@ fn a_floor_from_minus_1e30_to_1e30_draws_exactly_its_row_across_the_canvas() {
 }
 
 #[test]
+fn a_vertical_floor_from_minus_1e30_to_1e30_draws_exactly_its_column_down_the_canvas() {
+    // Steep floors are cut along y, their longer axis (along x there is nothing to cut).
+    let floor = Floor {
+        from: Vec2::new(100.0, -1e30),
+        to: Vec2::new(100.0, 1e30),
+        damping: 1.0,
+    };
+    let (_, frame) = draw(vec![floor], &[]);
+    let mut expected: Vec<(u32, u32)> = (0..240).map(|y| (100, y)).collect();
+    expected.sort_by_key(|&(x, y)| (y, x));
+    assert_eq!(drawn(&frame), expected);
+}
+
+#[test]
 fn a_diagonal_floor_reaching_1e30_draws_only_its_diagonal_on_the_canvas() {
     let floor = Floor {
         from: Vec2::new(-1e30, -1e30),
