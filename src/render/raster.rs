@@ -386,6 +386,41 @@ mod tests {
     use super::*;
     use crate::scene::spec::BallSpec;
 
+    const CANVAS: Vec2 = Vec2::new(320.0, 240.0);
+
+    #[test]
+    fn a_segment_inside_the_canvas_keeps_its_ends_to_the_bit() {
+        // Through its line's equation the far end would come out 7e-15 off (50.900000000000006).
+        let (from, to) = (Vec2::new(10.3, 20.7), Vec2::new(100.1, 50.9));
+        assert_eq!(clip_segment(from, to, CANVAS), Some((from, to)));
+    }
+
+    #[test]
+    fn a_segment_reaching_far_beyond_is_cut_one_pixel_beyond_the_canvas_along_its_longer_axis() {
+        let level = clip_segment(Vec2::new(-1e30, 120.0), Vec2::new(1e30, 120.0), CANVAS);
+        assert_eq!(
+            level,
+            Some((Vec2::new(-1.0, 120.0), Vec2::new(321.0, 120.0)))
+        );
+        let upright = clip_segment(Vec2::new(100.0, -1e30), Vec2::new(100.0, 1e30), CANVAS);
+        assert_eq!(
+            upright,
+            Some((Vec2::new(100.0, -1.0), Vec2::new(100.0, 241.0)))
+        );
+    }
+
+    #[test]
+    fn a_segment_wholly_beside_the_canvas_is_dismissed() {
+        for (from, to) in [
+            (Vec2::new(-1e30, 50.0), Vec2::new(-5.0, 60.0)),
+            (Vec2::new(330.0, 50.0), Vec2::new(1e30, 60.0)),
+            (Vec2::new(50.0, -1e30), Vec2::new(60.0, -5.0)),
+            (Vec2::new(50.0, 250.0), Vec2::new(60.0, 1e30)),
+        ] {
+            assert_eq!(clip_segment(from, to, CANVAS), None, "{from:?} to {to:?}");
+        }
+    }
+
     fn ball(trail_colour: Rgb, trail: usize) -> BallSpec {
         BallSpec {
             x: 50.0,
