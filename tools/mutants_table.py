@@ -1,54 +1,63 @@
 #!/usr/bin/env python3
 """Tallies cargo-mutants' outcomes per file into docs/tests.md's table.
 
-    python3 tools/mutants_table.py target/mutants-lesson target/mutants-lesson-all ...
+    python3 tools/mutants_table.py FIRST_PASS AGAIN [FIRST_PASS AGAIN ...]
 
-Each argument is a --output folder of tools/mutants.sh; later folders (a group's --iterate
---all-tests pass) override earlier ones for the mutants they tried again. Equivalent mutants
-are those `cargo mutants --list` names without .cargo/mutants.toml's exclusions but not with
-them. Prints one Markdown row per file.
+FIRST_PASS is a --output folder of `tools/mutants.sh GROUP`; AGAIN the folder of a later run
+of the same group that tried its missed mutants again once tests were added (`--iterate`, or
+`-F` naming them). Lines move as code and tests are added, so mutants are matched by file,
+function and change, without line and column. A first-pass miss counts as caught if tried
+again and caught, as equivalent if .cargo/mutants.toml now excludes it, and as missed
+otherwise. Prints one Markdown row per file.
 """
 import collections
 import json
+import re
 import subprocess
 import sys
 
-outcome = {}
-for folder in sys.argv[1:]:
+
+def outcomes(folder):
     with open(f"{folder}/mutants.out/outcomes.json") as f:
         for o in json.load(f)["outcomes"]:
-            mutant = o["scenario"]
-            if isinstance(mutant, dict) and "Mutant" in mutant:
-                outcome[mutant["Mutant"]["name"]] = o["summary"]
-
-files = sorted({name.split(":")[0] for name in outcome})
+            scenario = o["scenario"]
+            if isinstance(scenario, dict) and "Mutant" in scenario:
+                yield scenario["Mutant"]["name"], o["summary"]
 
 
-def listed(*extra):
-    args = ["cargo", "mutants", "--list", *extra]
-    for file in files:
-        args += ["--file", file]
-    return set(subprocess.run(args, capture_output=True, text=True, check=True).stdout.split("\n")) - {""}
+def unplaced(name):
+    return re.sub(r":\d+:\d+:", ":", name)
 
 
-kept = listed()
-equivalent = listed("--no-config") - kept
+def listed(files, *extra):
+    args = ["cargo", "mutants", "--list", *extra] + [a for f in files for a in ("--file", f)]
+    names = subprocess.run(args, capture_output=True, text=True, check=True).stdout.split("\n")
+    return collections.Counter(unplaced(n) for n in names if n)
+
+
+first_passes = [list(outcomes(first)) for first in sys.argv[1::2]]
+files = sorted({name.split(":")[0] for run in first_passes for name, _ in run})
+equivalent = listed(files, "--no-config") - listed(files)
 rows = collections.defaultdict(collections.Counter)
-for name, summary in outcome.items():
-    if name in kept:
+for run, again in zip(first_passes, sys.argv[2::2]):
+    retried = collections.defaultdict(list)
+    for name, summary in outcomes(again):
+        retried[unplaced(name)].append(summary)
+    for name, summary in run:
+        if summary == "MissedMutant":
+            if equivalent[unplaced(name)] > 0:
+                equivalent[unplaced(name)] -= 1
+                summary = "equivalent"
+            elif retried[unplaced(name)]:
+                summary = retried[unplaced(name)].pop()
         rows[name.split(":")[0]][summary] += 1
-for name in equivalent:
-    rows[name.split(":")[0]]["equivalent"] += 1
 
 print("| file | mutants | caught | timed out (caught) | missed | equivalent | unviable | score |")
 print("|---|---:|---:|---:|---:|---:|---:|---:|")
 for file in files:
     r = rows[file]
-    caught, timeout, missed = r["CaughtMutant"], r["Timeout"], r["MissedMutant"]
-    viable = caught + timeout + missed
-    score = f"{100 * (caught + timeout) / viable:.1f} %" if viable else "–"
-    total = viable + r["equivalent"] + r["Unviable"]
-    print(f"| `{file}` | {total} | {caught} | {timeout} | {missed} | {r['equivalent']} | {r['Unviable']} | {score} |")
-untried = kept - set(outcome)
-if untried:
-    print(f"\n{len(untried)} mutants not tried:", *sorted(untried), sep="\n", file=sys.stderr)
+    total = sum(r.values())
+    caught, timeout, unviable = r["CaughtMutant"], r["Timeout"], r["Unviable"]
+    missed = r["MissedMutant"]
+    print(f"| `{file}` | {total} | {caught} | {timeout} | {missed} | {r['equivalent']} | {unviable} | "
+          f"{100 * (caught + timeout) / (caught + timeout + missed):.1f} % |")
