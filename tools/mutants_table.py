@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Tallies cargo-mutants' outcomes per file into docs/tests.md's table.
 
-    python3 tools/mutants_table.py FIRST_PASS AGAIN [FIRST_PASS AGAIN ...]
+    python3 tools/mutants_table.py FIRST_PASS AGAIN[,AGAIN...] [FIRST_PASS AGAIN ...]
 
 FIRST_PASS is a --output folder of `tools/mutants.sh GROUP`; AGAIN the folder of a later run
 of the same group that tried its missed mutants again once tests were added (`--iterate`, or
@@ -41,8 +41,9 @@ equivalent = listed(files, "--no-config") - listed(files)
 rows = collections.defaultdict(collections.Counter)
 for run, again in zip(first_passes, sys.argv[2::2]):
     retried = collections.defaultdict(list)
-    for name, summary in outcomes(again):
-        retried[unplaced(name)].append(summary)
+    for folder in again.split(","):  # a later folder's outcome is used first
+        for name, summary in outcomes(folder):
+            retried[unplaced(name)].append(summary)
     for name, summary in run:
         if summary == "MissedMutant":
             if equivalent[unplaced(name)] > 0:
