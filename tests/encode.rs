@@ -354,7 +354,7 @@ fn decode_lzw(width: u16, height: u16, colours: usize, data: &[u8]) -> Vec<u8> {
 #[test]
 fn lzw_decodes_to_the_same_indices_for_every_code_size_and_dictionary_choice() {
     // 400x300 px of noise fill even the 4096-code dictionary many times over, so each choice
-    // reaches its size: cleared there (greedy, small) or kept full to the end.
+    // reaches its size: cleared there (greedy, half, small) or kept full to the end.
     let mut random = Random::new(9);
     let mut lzw = Lzw::new();
     let mut data = Vec::new();
@@ -363,7 +363,12 @@ fn lzw_decodes_to_the_same_indices_for_every_code_size_and_dictionary_choice() {
             .map(|_| (random.next_u64() % colours as u64) as u8)
             .collect();
         let code_size = min_code_size(colours);
-        for choices in [Choices::GREEDY, Choices::SMALL, Choices::KEEP_FULL] {
+        for choices in [
+            Choices::GREEDY,
+            Choices::HALF,
+            Choices::SMALL,
+            Choices::KEEP_FULL,
+        ] {
             let most = lzw.compress(code_size, &noise, choices, usize::MAX, &mut data);
             assert_eq!(
                 most,
@@ -397,7 +402,7 @@ fn a_dictionary_choice_started_from_its_fork_writes_the_same_bytes_as_from_the_s
         }
     }
     assert!(
-        forked >= 8,
+        forked >= 12,
         "only {forked} codings forked: the test checks too little"
     );
 }
@@ -414,14 +419,14 @@ fn assert_fork_equals_start(
     let (mut first, mut resumed, mut whole) = (Vec::new(), Vec::new(), Vec::new());
     let size = min_code_size(colours);
     let mut forked = 0;
-    for choices in [Choices::SMALL, Choices::KEEP_FULL] {
+    for choices in [Choices::SMALL, Choices::HALF, Choices::KEEP_FULL] {
         let expected = lzw.compress(size, pixels, choices, usize::MAX, &mut whole);
         lzw.compress(size, pixels, Choices::GREEDY, usize::MAX, &mut first);
         let forks = lzw.forks();
-        let fork = if choices == Choices::SMALL {
-            forks.small
-        } else {
-            forks.full
+        let fork = match choices {
+            Choices::SMALL => forks.small,
+            Choices::HALF => forks.half,
+            _ => forks.full,
         };
         let case = format!("{colours} colours, {width}x{height}, {choices:?}");
         let Some(fork) = fork else {
@@ -595,5 +600,49 @@ fn a_fork_into_a_full_dictionary_taken_after_another_coding_is_refused() {
         &first,
         usize::MAX,
         &mut resumed,
+    );
+}
+
+#[test]
+fn a_canvas_empty_above_and_busy_below_is_coded_with_half_the_dictionary() {
+    // The pyramid's first frame: black above, 55 balls stacked below. Its greedy coding holds
+    // more than 2048 codes but never 4096, so the busy part is written in 12-bit codes of
+    // strings learnt from the black part; cleared at 2048 codes instead, the busy part learns
+    // its own strings in codes of at most 11 bits.
+    let scene = bouncing_ball::scene::preset("pyramid", 1).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let path = write_gif(&scene, dir.path());
+    let first_frame = |options: gif::DecodeOptions| {
+        let mut decoder = options
+            .read_info(std::fs::File::open(&path).unwrap())
+            .unwrap();
+        decoder.read_next_frame().unwrap().unwrap().buffer.to_vec()
+    };
+    let mut indexed = gif::DecodeOptions::new();
+    indexed.set_color_output(gif::ColorOutput::Indexed);
+    let pixels = first_frame(indexed);
+    let mut compressed = gif::DecodeOptions::new();
+    compressed.skip_frame_decoding(true);
+    let stored = first_frame(compressed);
+
+    let (mut lzw, mut greedy, mut half) = (Lzw::new(), Vec::new(), Vec::new());
+    let code_size = stored[0];
+    let codes = lzw.compress(code_size, &pixels, Choices::GREEDY, usize::MAX, &mut greedy);
+    let fork = lzw
+        .forks()
+        .half
+        .expect("the greedy coding reaches 2048 codes");
+    lzw.compress_from(fork, Choices::HALF, &pixels, &greedy, usize::MAX, &mut half);
+    assert!(
+        half.len() < greedy.len(),
+        "half the dictionary: {} B, greedy ({codes:?} codes): {} B",
+        half.len(),
+        greedy.len()
+    );
+    assert!(
+        stored == half,
+        "the GIF's first frame is {} B, not the half-dictionary coding's {} B",
+        stored.len(),
+        half.len()
     );
 }

@@ -49,6 +49,14 @@ impl Choices {
         clear_when_full: true,
     };
 
+    /// Half the dictionary, cleared every 2048 codes: codes stay at most 11 bits, which suits
+    /// big images whose later part repeats few of the earlier part's strings (a canvas empty
+    /// above and full below: the first frame of `pyramid`).
+    pub const HALF: Choices = Choices {
+        max_codes: MAX_CODES / 2,
+        clear_when_full: true,
+    };
+
     /// The full dictionary kept once it fills: suits big images whose first part holds the
     /// strings of the rest (gifsicle -O3 does the same).
     pub const KEEP_FULL: Choices = Choices {
@@ -94,11 +102,12 @@ impl Coding {
     }
 }
 
-/// The last coding's forks: where its dictionary first held [`Choices::SMALL`]'s number of
-/// codes, and where it was first full.
+/// The last coding's forks: where its dictionary first held [`Choices::SMALL`]'s and
+/// [`Choices::HALF`]'s number of codes, and where it was first full.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Forks {
     pub small: Option<Fork>,
+    pub half: Option<Fork>,
     pub full: Option<Fork>,
 }
 
@@ -112,6 +121,9 @@ pub struct Lzw {
     /// The entries of `next` set since the last clear.
     set: Vec<usize>,
     forks: Forks,
+    /// The number of codes at which the greedy coding being written takes its next fork, or
+    /// 0 once it has taken them all (and for a coding started from a fork, which takes none).
+    next_fork: u16,
     /// How many of the table's rows (one per byte) have been written. Memory the system
     /// hands over zeroed is mapped to one shared zero page until first written; a coder reads
     /// an entry before it writes it, so each page would fault twice, the second time stopping
@@ -141,6 +153,7 @@ impl Lzw {
             rows_written: 0,
             set: Vec::with_capacity(usize::from(MAX_CODES)),
             forks: Forks::default(),
+            next_fork: 0,
             codings: 0,
             full_dictionary: Vec::with_capacity(usize::from(MAX_CODES)),
         }
@@ -165,6 +178,7 @@ impl Lzw {
         let start = Coding::fresh(min_code_size);
         bits.put(1 << min_code_size, start.width);
         self.forks = Forks::default();
+        self.next_fork = Choices::SMALL.max_codes;
         self.codings += 1;
         self.write_rows(1 << min_code_size);
         self.code(start, min_code_size, pixels, choices, budget, bits)
@@ -193,6 +207,7 @@ impl Lzw {
         let min_code_size = first[0];
         out.clear();
         out.extend_from_slice(&first[..fork.bytes]);
+        self.next_fork = 0;
         let mut bits = BitPacker {
             out,
             pending: fork.pending,
@@ -240,7 +255,9 @@ impl Lzw {
             let Some(&byte) = pixels.get(state.at) else {
                 break;
             };
-            self.note_fork(state, &bits);
+            if state.free == self.next_fork {
+                self.note_fork(state, &bits);
+            }
             if state.free < max_codes {
                 let slot = slot(code, byte);
                 self.next[slot] = state.free;
@@ -277,25 +294,28 @@ impl Lzw {
         }
     }
 
-    /// Keeps where the dictionary first reached the small size, and where it was first full.
+    /// Keeps where the dictionary first reached the small size, then the half size, then
+    /// where it was first full (the greedy coding reaches them in that order, before its first
+    /// clear), and waits for the next. Called only when it reaches `next_fork`, so the hot
+    /// loop pays one comparison per code.
     fn note_fork(&mut self, state: Coding, bits: &BitPacker) {
-        let fork = match state.free {
-            free if free == Choices::SMALL.max_codes => &mut self.forks.small,
-            MAX_CODES => &mut self.forks.full,
-            _ => return,
-        };
-        if fork.is_some() {
-            return;
-        }
-        *fork = Some(Fork {
+        let fork = Some(Fork {
             state,
             coding: self.codings,
             bytes: bits.out.len(),
             pending: bits.pending,
             pending_bits: bits.pending_bits,
         });
-        if state.free == MAX_CODES {
+        if state.free == Choices::SMALL.max_codes {
+            self.forks.small = fork;
+            self.next_fork = Choices::HALF.max_codes;
+        } else if state.free == Choices::HALF.max_codes {
+            self.forks.half = fork;
+            self.next_fork = MAX_CODES;
+        } else {
+            self.forks.full = fork;
             self.full_dictionary.clone_from(&self.set);
+            self.next_fork = 0;
         }
     }
 
