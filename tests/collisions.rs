@@ -299,6 +299,36 @@ fn balls_flung_far_away_or_to_infinity_do_not_break_the_grid() {
     assert_eq!(vec![(0, 1)], found);
 }
 
+#[test]
+fn a_ball_that_rounding_puts_one_column_past_the_grid_is_still_paired_and_measured() {
+    // Balls of radius 1.1 make cells 2.2 px wide. From x = 0 to x = 24.2 the grid has
+    // floor(24.2 / 2.2) + 1 = 11 columns (24.2 / 2.2 rounds to 10.999…), but it finds a ball's
+    // column by multiplying by 1 / 2.2, and 24.2 × (1 / 2.2) rounds to 11.0: one column past
+    // the last, where the ball must be kept in the last column, or it is in no cell at all.
+    let per_cell: f64 = 1.0 / 2.2;
+    assert!(
+        24.2 / 2.2 < 11.0 && 24.2 * per_cell == 11.0,
+        "the rounding this test relies on"
+    );
+    let balls = [
+        ball(0.0, 0.0, 0.0, 0.0, 1.1),
+        ball(23.0, 0.0, 0.0, 0.0, 1.1),
+        ball(24.2, 0.0, 0.0, 0.0, 1.1),
+    ];
+    let mut grid = Grid::new();
+    grid.rebuild(&balls);
+    let mut found = Vec::new();
+    grid.for_each_overlapping_pair(|i, j| found.push((i, j)));
+    assert_eq!(vec![(1, 2)], found);
+    // The pair overlaps by the sum of the radii less the distance between the centres.
+    let expected = 2.2 - (24.2 - 23.0);
+    let measured = grid.deepest_overlap(&balls);
+    assert!(
+        (measured - expected).abs() < ROUNDING,
+        "deepest overlap {measured} px, expected {expected} px"
+    );
+}
+
 proptest! {
     #[test]
     fn the_grid_finds_exactly_the_pairs_a_brute_force_search_finds(
