@@ -188,6 +188,30 @@ fn two_balls_spawned_at_the_same_centre_separate_and_stay_apart() {
 }
 
 #[test]
+fn two_balls_at_one_spot_part_along_the_later_balls_golden_angle() {
+    // Two centres at one spot have no line between them. Ball j leaves at j golden angles
+    // (π(3 − √5) each), so that a heap spawned on one spot fans out round the circle rather
+    // than along one line; here ball 1 leaves at one golden angle, and the pair stays on it.
+    let at_rest = (150.0, 100.0, 0.0, 0.0, 5.0);
+    let simulation = collide(&[at_rest, at_rest], 0.5, 50);
+    let [a, b] = [&simulation.balls()[0], &simulation.balls()[1]];
+    let apart = distance(a, b);
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    let (cos, sin) = ((b.x - a.x) / apart, (b.y - a.y) / apart);
+    let along = cos * golden.cos() + sin * golden.sin();
+    assert!(
+        along.abs() > 1.0 - ROUNDING,
+        "expected the pair apart along ±({}, {}), got ({cos}, {sin})",
+        golden.cos(),
+        golden.sin()
+    );
+    assert!(
+        apart > 10.0 * (1.0 - SLOP),
+        "expected the pair apart, centres {apart} px apart"
+    );
+}
+
+#[test]
 fn a_heap_of_balls_spawned_on_one_spot_spreads_out_without_being_set_moving() {
     // 60 balls at rest within 1 px of one point, ten of them at exactly that point. The
     // position pass unpacks the heap over frames, moving positions only.
