@@ -79,6 +79,9 @@ impl Cells {
 
         self.balls.reset(self.columns * self.rows, balls.len());
         self.at.clear();
+        // Exactly one place per ball, as the memory budget counts (pushing would grow it to
+        // the next power of two).
+        self.at.reserve_exact(balls.len());
         for (i, ball) in balls.iter().enumerate() {
             let column = (((ball.x - left) / self.size) as usize).min(self.columns - 1);
             let row = (((ball.y - top) / self.size) as usize).min(self.rows - 1);

@@ -350,6 +350,8 @@ impl EventDriven {
             self.find_held(balls, step.forces);
         }
         self.flight.clear();
+        // Exactly one per ball, as the memory budget counts.
+        self.flight.reserve_exact(balls.len());
         for (i, ball) in balls.iter_mut().enumerate() {
             let flight = if self.asleep[i] {
                 Forces {
