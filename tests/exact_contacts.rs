@@ -121,6 +121,34 @@ fn a_head_on_pair_closing_at_100_diameters_per_frame_bounces_back() {
 }
 
 #[test]
+fn a_slow_ball_on_a_moving_ball_is_not_put_to_sleep() {
+    // In the lesson's box (240 px high), a ball drifting at 0.3 px/frame, slower than the
+    // sleep speed (gravity's 0.5 px/frame in one frame), sits exactly on top of one that slides
+    // along the floor at 3 px/frame. Only sleeping balls, walls and floors can hold a ball up
+    // for good, and the sliding ball is awake: so the top ball must not sleep (which would
+    // stop it dead), but keep drifting.
+    let balls = vec![
+        ball(100.0, 230.0, 3.0, 0.0, 10.0),
+        ball(100.0, 210.0, 0.3, 0.0, 10.0),
+    ];
+    let mut simulation = Simulation::new(
+        balls,
+        lesson_effects(0.5),
+        exact(Integrator::SemiImplicitEuler),
+        Some(0.5),
+    );
+    simulation.step();
+    let top = &simulation.balls()[1];
+    assert!(
+        top.x > 100.0 && top.vx > 0.0,
+        "expected the top ball still drifting right from x 100 at 0.3 px/frame, it is at x {} \
+         moving at {}",
+        top.x,
+        top.vx
+    );
+}
+
+#[test]
 fn newtons_cradle_sends_exactly_one_ball_out_at_the_incoming_speed() {
     // Five equal balls touching in a row, a sixth arriving along the line at 5 px/frame.
     let mut balls: Vec<Ball> = (0..5)
