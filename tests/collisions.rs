@@ -212,6 +212,35 @@ fn two_balls_at_one_spot_part_along_the_later_balls_golden_angle() {
 }
 
 #[test]
+fn an_inelastic_cradles_centre_of_mass_moves_at_its_constant_velocity() {
+    // Five balls touching in a row, a sixth arriving at 5 px/frame, restitution 0: the row
+    // keeps colliding, so the solver tries touch by touch, gives up and takes sub-steps
+    // from where the step began. With no walls or gravity, the centre of mass moves at the
+    // total momentum over the total mass whatever the collisions do: x(t) = x(0) + v·t.
+    let mut start: Vec<(f64, f64, f64, f64, f64)> = (0..5)
+        .map(|k| (100.0 + 20.0 * f64::from(k), 100.0, 0.0, 0.0, 10.0))
+        .collect();
+    start.push((43.0, 100.0, 5.0, 0.0, 10.0));
+    let balls: Vec<Ball> = start
+        .iter()
+        .map(|&(x, y, vx, vy, r)| ball(x, y, vx, vy, r))
+        .collect();
+    let total: f64 = balls.iter().map(mass).sum();
+    let centre = |balls: &[Ball]| balls.iter().map(|b| mass(b) * b.x).sum::<f64>() / total;
+    let (x0, v) = (centre(&balls), momentum(&balls)[0] / total);
+    for frames in [1, 5, 30] {
+        let simulation = collide(&start, 0.0, frames);
+        let expected = x0 + v * f64::from(frames);
+        assert_close(
+            &format!("centre of mass after {frames} frames"),
+            expected,
+            centre(simulation.balls()),
+            expected,
+        );
+    }
+}
+
+#[test]
 fn a_heap_of_balls_spawned_on_one_spot_spreads_out_without_being_set_moving() {
     // 60 balls at rest within 1 px of one point, ten of them at exactly that point. The
     // position pass unpacks the heap over frames, moving positions only.
