@@ -298,6 +298,37 @@ fn drag_0_changes_no_bit_of_the_motion() {
 }
 
 #[test]
+fn strong_drag_takes_the_same_steps_whether_or_not_the_frame_is_already_split() {
+    // Verlet and RK4 treat drag as a force, which overshoots once a step's λ·dt passes 2, so
+    // a step never takes more than λ·dt = 1: drag 0.99 (λ = 4.6 a frame) needs 5 steps a
+    // frame. 2 sub-steps (λ 2.3 each) become 3 steps each, and 6 sub-steps (λ 0.77) need no
+    // more: both are 6 steps of a sixth of a frame, so they move the ball to the same bit.
+    let effects = Effects {
+        drag: Some(0.99),
+        ..lesson_effects(0.88)
+    };
+    for integrator in [Integrator::VelocityVerlet, Integrator::Rk4] {
+        let split = |substeps| Motion {
+            integrator,
+            substeps,
+            ..Motion::default()
+        };
+        let (mut two, mut six) = (
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+            Ball::new(40.0, 40.0, 5.2, 0.0, RADIUS, 0),
+        );
+        for frame in 0..100 {
+            split(2).advance(&mut two, &effects);
+            split(6).advance(&mut six, &effects);
+            assert_eq!(
+                two, six,
+                "{integrator:?}, frame {frame}: 2 sub-steps of 3 steps and 6 of 1 differ"
+            );
+        }
+    }
+}
+
+#[test]
 fn drag_without_gravity_slows_the_ball_as_the_closed_form_says() {
     // No gravity, no walls: v(n) = v0·(1 − drag)^n along the same line.
     let drag = 0.002;
