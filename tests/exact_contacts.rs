@@ -267,6 +267,51 @@ fn an_elastic_ball_on_a_flat_floor_or_in_a_valley_keeps_its_energy_exactly() {
     }
 }
 
+#[test]
+fn a_ball_dropped_on_a_floor_in_exact_mode_bounces_when_and_where_the_closed_form_says() {
+    // A ball of radius 10 falls from rest at y 100 onto a flat elastic floor at y 200, under
+    // gravity 0.5 px/frame²: it touches at t₀ = √(2·90/0.5) frames, leaves at −g·t₀, and is
+    // back at y 100, at rest, at 2·t₀. Verlet and RK4 follow the parabola exactly.
+    let floor = vec![Floor {
+        from: Vec2::new(40.0, 200.0),
+        to: Vec2::new(280.0, 200.0),
+        damping: 1.0,
+    }];
+    let effects = elastic_box_with(floor);
+    let g: f64 = 0.5;
+    let touch = (2.0 * 90.0 / g).sqrt();
+    let expected = |t: f64| {
+        if t < touch {
+            (100.0 + 0.5 * g * t * t, g * t)
+        } else if t < 2.0 * touch {
+            let since = t - touch;
+            (
+                190.0 - g * touch * since + 0.5 * g * since * since,
+                -g * touch + g * since,
+            )
+        } else {
+            let since = t - 2.0 * touch;
+            (100.0 + 0.5 * g * since * since, g * since)
+        }
+    };
+    for integrator in [Integrator::VelocityVerlet, Integrator::Rk4] {
+        let motion = exact(integrator);
+        let mut b = ball(160.0, 100.0, 0.0, 0.0, 10.0);
+        for frame in 1..=40 {
+            motion.advance(&mut b, &effects);
+            let (y, vy) = expected(f64::from(frame));
+            assert!(
+                (b.y - y).abs() < 1e-9 && (b.vy - vy).abs() < 1e-9 && b.x == 160.0,
+                "{integrator:?}, frame {frame}: expected (160, {y}) moving down at {vy}, got \
+                 ({}, {}) at {}",
+                b.x,
+                b.y,
+                b.vy
+            );
+        }
+    }
+}
+
 /// Seeds of the pile's jittered start: each drops the balls differently.
 const PILE_SEEDS: u64 = 12;
 
