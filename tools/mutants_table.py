@@ -32,12 +32,21 @@ def unplaced(name):
 def listed(files, *extra):
     args = ["cargo", "mutants", "--list", *extra] + [a for f in files for a in ("--file", f)]
     names = subprocess.run(args, capture_output=True, text=True, check=True).stdout.split("\n")
-    return collections.Counter(unplaced(n) for n in names if n)
+    return collections.Counter(n for n in names if n)
+
+
+def unplaced_counts(names):
+    return collections.Counter(unplaced(n) for n in names.elements())
 
 
 first_passes = [list(outcomes(first)) for first in sys.argv[1::2]]
 files = sorted({name.split(":")[0] for run in first_passes for name, _ in run})
-equivalent = listed(files, "--no-config") - listed(files)
+every, kept = listed(files, "--no-config"), listed(files)
+# A mutant whose line has not moved is equivalent if its own name is excluded; one whose line
+# moved is matched by file, function and change (two alike in one function are told apart
+# only by their place, so their own names decide wherever they still exist).
+excluded = every - kept
+equivalent = unplaced_counts(excluded)
 rows = collections.defaultdict(collections.Counter)
 for run, again in zip(first_passes, sys.argv[2::2]):
     retried = collections.defaultdict(list)
@@ -46,8 +55,12 @@ for run, again in zip(first_passes, sys.argv[2::2]):
             retried[unplaced(name)].append(summary)
     for name, summary in run:
         if summary == "MissedMutant":
-            if equivalent[unplaced(name)] > 0:
-                equivalent[unplaced(name)] -= 1
+            if name in every:
+                is_equivalent = name in excluded
+            else:
+                is_equivalent = equivalent[unplaced(name)] > 0
+                equivalent[unplaced(name)] -= is_equivalent
+            if is_equivalent:
                 summary = "equivalent"
             elif retried[unplaced(name)]:
                 summary = retried[unplaced(name)].pop()
