@@ -12,8 +12,9 @@
 //!
 //! Each also with a full dictionary kept to the end ([`Choices::KEEP_FULL`]) instead of
 //! cleared, when the dictionary fills; and the winning layout with half the dictionary
-//! ([`Choices::HALF`]), on the first frame when its coding reached that size, and with a small dictionary
-//! ([`Choices::SMALL`]), when its coding held more than [`SMALL_DICTIONARY_FROM`] codes.
+//! ([`Choices::HALF`]), on the first frame when its coding reached that size, and with a
+//! small dictionary ([`Choices::SMALL`]), when its coding held more than
+//! [`SMALL_DICTIONARY_FROM`] codes.
 //! These start where the greedy coding's dictionary reached their size, since up to there
 //! the two write the same bytes.
 //! Every candidate uses the smallest code size its indices allow, and gives up as soon as it
