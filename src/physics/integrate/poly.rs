@@ -149,7 +149,8 @@ impl Poly {
         if self.at(root) >= 0.0 && self.at(after) < 0.0 {
             return Some((root, after));
         }
-        let rounding = f64::EPSILON * (value.abs() + (slope * root).abs());
+        // Relative rounding, and near 0 the underflow of a product to the nearest subnormal.
+        let rounding = f64::EPSILON * (value.abs() + (slope * root).abs()) + SMALLEST_SUBNORMAL;
         let spread = LINE_ROOT_ROUNDINGS * (rounding / -slope + f64::EPSILON * root);
         let (low, high) = ((root - spread).max(0.0), (root + spread).min(end));
         if self.at(low) >= 0.0 && self.at(high) < 0.0 {
@@ -185,21 +186,74 @@ impl Poly {
         roots
     }
 
-    /// Narrows `[left, right]` (`≥ 0` at `left`, `< 0` at `right`) down to adjacent numbers
-    /// and returns them: the last point not below zero and the first one below.
-    fn bisect(&self, mut left: f64, mut right: f64) -> (f64, f64) {
+    /// Narrows `[left, right]` (`≥ 0` at `left`, `< 0` at `right`, both times, so not
+    /// negative) down to adjacent numbers and returns them: the last point not below zero and
+    /// the first one below.
+    ///
+    /// Each try is where the chord between the two ends crosses zero (false position), with
+    /// the Illinois rule: an end kept twice in a row has its value halved, so that the next
+    /// chord lands beyond the root and both ends close in. Where the polynomial is monotone,
+    /// that takes a handful of tries where halving the bracket takes up to 64. Once the left
+    /// end's value rounds to exactly zero the chord cannot move it: the numbers after it are
+    /// tried 1, 2, 4, … apart, since the first one below zero is usually a few numbers on. A
+    /// try that would not land strictly inside the bracket is replaced by the `midpoint`, as
+    /// are chords after [`MAX_CHORDS`], so the search always ends.
+    fn bisect(&self, left: f64, right: f64) -> (f64, f64) {
+        self.narrow(left, right).0
+    }
+
+    /// `bisect`, and how many points it evaluated on the way.
+    fn narrow(&self, mut left: f64, mut right: f64) -> ((f64, f64), u32) {
+        let mut tries = 0;
+        let (mut at_left, mut at_right) = (self.at(left), self.at(right));
+        let (mut kept, mut chords, mut stride) = (Kept::Neither, 0, 1);
         loop {
             let mid = midpoint(left, right);
             if mid <= left || mid >= right {
-                return (left, right);
+                return ((left, right), tries);
             }
-            if self.at(mid) < 0.0 {
-                right = mid;
+            tries += 1;
+            let chord = left + (right - left) * (at_left / (at_left - at_right));
+            let ahead = f64::from_bits(left.to_bits().saturating_add(stride));
+            let t = if at_left == 0.0 && ahead < right {
+                stride *= 2;
+                ahead
+            } else if chords < MAX_CHORDS && chord > left && chord < right {
+                chords += 1;
+                chord
             } else {
-                left = mid;
+                mid
+            };
+            let value = self.at(t);
+            if value < 0.0 {
+                (right, at_right) = (t, value);
+                if kept == Kept::Left {
+                    at_left /= 2.0;
+                }
+                kept = Kept::Left;
+            } else {
+                (left, at_left) = (t, value);
+                if kept == Kept::Right {
+                    at_right /= 2.0;
+                }
+                kept = Kept::Right;
             }
         }
     }
+}
+
+/// The most chords `Poly::bisect` tries before it only halves: as many as halving needs.
+const MAX_CHORDS: u32 = 64;
+
+/// The smallest positive `f64`: the most a product rounds by near 0, where it underflows.
+const SMALLEST_SUBNORMAL: f64 = f64::from_bits(1);
+
+/// Which end of its bracket `Poly::bisect`'s last try kept.
+#[derive(Clone, Copy, PartialEq)]
+enum Kept {
+    Neither,
+    Left,
+    Right,
 }
 
 /// A number between `left` and `right` that halves the count of numbers between them: for
@@ -383,5 +437,101 @@ mod tests {
             p.at(before) >= 0.0 && p.at(after) < 0.0 && after == before.next_up(),
             "expected adjacent times around the root 11.82, got {before} and {after}"
         );
+    }
+
+    /// Bisection by `midpoint` alone, the search `Poly::bisect` replaced: the same answer on
+    /// a monotone piece, in up to 64 halvings.
+    fn halving(p: &Poly, mut left: f64, mut right: f64) -> ((f64, f64), u32) {
+        let mut tries = 0;
+        loop {
+            let mid = midpoint(left, right);
+            if mid <= left || mid >= right {
+                return ((left, right), tries);
+            }
+            tries += 1;
+            if p.at(mid) < 0.0 {
+                right = mid;
+            } else {
+                left = mid;
+            }
+        }
+    }
+
+    /// Monotone pieces met by exact mode's pile (a wall along a parabola, two balls along
+    /// Verlet and RK4 flights), each with the bracket `Poly::first_crossing` gave it.
+    const PIECES: [(&[f64], f64, f64); 6] = [
+        (&[1.240051333910273, -3.163254841543085, -0.25], 0.0, 1.0),
+        (
+            &[
+                1.7629330774629235,
+                -6.413664614649425,
+                0.7439453960051885,
+                0.25,
+            ],
+            0.0,
+            0.7500357291111417,
+        ),
+        (
+            &[
+                1.44e-7,
+                1.132498770353152e-4,
+                -1.1068719212921576,
+                0.5950276547632827,
+                0.0625,
+            ],
+            5.115973538622624e-5,
+            0.6257723500324519,
+        ),
+        (
+            &[
+                0.7634887473197978,
+                1.6351345822148975,
+                -4.032546890990853,
+                0.0524300345572801,
+            ],
+            0.20375414432086553,
+            0.9748985108052092,
+        ),
+        (
+            &[
+                2.108108662923769e-5,
+                0.00581311836711329,
+                -4.700638652709018,
+                -0.1667232087938,
+            ],
+            6.183124927972044e-4,
+            1.0,
+        ),
+        (&[1e-300, -1.0], 0.0, 1.0),
+    ];
+
+    #[test]
+    fn false_position_ends_where_halving_does_in_at_most_half_the_tries() {
+        for (c, left, right) in PIECES {
+            let p = Poly::new(c);
+            let (found, tries) = p.narrow(left, right);
+            let (expected, halvings) = halving(&p, left, right);
+            assert_eq!(found, expected, "{c:?}: expected the crossing {expected:?}");
+            assert!(
+                tries <= 20 && 2 * tries <= halvings,
+                "{c:?}: {tries} tries, against {halvings} halvings"
+            );
+        }
+    }
+
+    #[test]
+    fn a_left_end_rounding_to_zero_is_left_by_steps_that_double() {
+        // Near its root at 4.898e-5 this cubic rounds to exactly 0 for a few numbers: the
+        // chord cannot move past them, halving from the far end takes 40 tries.
+        let p = Poly::new(&[
+            2.6586541278206255e-4,
+            -5.427972804619163,
+            -0.9488056506823281,
+            0.25,
+        ]);
+        let (found, tries) = p.narrow(0.0, 3.7348344252490485e-2);
+        let (expected, halvings) = halving(&p, 0.0, 3.7348344252490485e-2);
+        assert_eq!(found, expected, "expected the crossing {expected:?}");
+        assert!(tries <= 10, "{tries} tries, against {halvings} halvings");
     }
 }
