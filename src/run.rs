@@ -12,6 +12,7 @@ use crate::budget::Estimate;
 use crate::job::files::{Gif, Writer};
 use crate::job::{Files, Job, OutputKind, RunError, Summary};
 use crate::output::OutputError;
+use crate::physics::replay::Playback;
 use crate::physics::Ball;
 use crate::plot::Plot;
 use crate::render::palette::{IndexedFrame, Palette};
@@ -24,7 +25,7 @@ use crate::trace;
 /// output file is left half-written and no existing file is changed.
 pub fn run(scene: &Scene, job: &Job) -> Result<Summary, RunError> {
     scene.validate()?;
-    let estimate = Estimate::within(scene, &job.budget)?;
+    let (estimate, playback) = Estimate::within_keeping(scene, &job.budget)?;
     job.check()?;
     let renderer = Renderer::new(scene)?;
     let plot = job
@@ -33,7 +34,8 @@ pub fn run(scene: &Scene, job: &Job) -> Result<Summary, RunError> {
     let plot = plot.transpose()?;
     let files = job.open(&estimate.warnings(scene))?;
     let mut writers = Writers::open(scene, &renderer, plot, &files)?;
-    let canvas = animate(scene, job, &renderer, &mut writers)?;
+    let playback = playback.unwrap_or_else(|| Playback::stepping(scene.simulation()));
+    let canvas = animate(scene, job, playback, &renderer, &mut writers)?;
     writers.finish(canvas.frame(), renderer.palette())?;
     job.commit(files, scene.frames)
 }
@@ -52,15 +54,16 @@ fn check_finite(scene: &Scene, balls: &[Ball], frame: u32) -> Result<(), RunErro
     })
 }
 
-/// Simulates every frame of `scene`, drawing it and handing it to `writers`; returns the
-/// canvas with the last frame drawn, for the still.
+/// Simulates every frame of `scene` (the first ones played back where the budget's pilot
+/// stepped them already), drawing it and handing it to `writers`; returns the canvas with the
+/// last frame drawn, for the still.
 fn animate(
     scene: &Scene,
     job: &Job,
+    mut simulation: Playback,
     renderer: &Renderer,
     writers: &mut Writers,
 ) -> Result<Canvas, RunError> {
-    let mut simulation = scene.simulation();
     let mut canvas = Canvas::new(renderer);
     job.progress().add_frames(scene.frames);
     for n in 0..scene.frames {

@@ -17,10 +17,10 @@ const NS_PER_COLLIDING_BALL_STEP: f64 = 400.0;
 /// methods fly each ball along a parabola, Verlet and RK4 along curves whose times of
 /// contact take longer to find. Measured on `--preset pile --collisions exact` with
 /// `cargo run --release --example exact_pile_cost` (the physics alone, steps included, idle
-/// machine): semi-implicit Euler 10,704 events, 0.9 µs each (1.0 to 1.9 µs on a loaded
-/// one); Verlet 64,744 events, 2.9 µs; RK4 114,833 events, 3.1 µs.
+/// machine, medians of 5): semi-implicit Euler 10,704 events, 0.9 µs each (1.0 to 1.9 µs on
+/// a loaded one); Verlet 64,416 events, 1.5 µs; RK4 114,120 events, 1.7 µs.
 const NS_PER_EULER_EVENT: f64 = 1_300.0;
-const NS_PER_CURVED_EVENT: f64 = 3_000.0;
+const NS_PER_CURVED_EVENT: f64 = 1_700.0;
 /// Per floor per ball per step.
 const NS_PER_FLOOR_TEST: f64 = 10.0;
 /// Per ball or trail dot drawn, and per pixel of them (a frame that changed draws every ball;

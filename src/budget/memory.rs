@@ -8,6 +8,7 @@ use crate::gif::encoder::queue_frames;
 use crate::physics::contacts::ContactSolver;
 use crate::physics::events::system::EventDriven;
 use crate::physics::motion::CollisionMode;
+use crate::physics::replay::{BYTES_PER_BALL_FRAME, KEPT_BYTES};
 use crate::physics::{Ball, Trail};
 use crate::render::Canvas;
 use crate::scene::{BallSpec, Rgb, Scene};
@@ -43,13 +44,28 @@ pub(crate) fn memory_of(scene: &Scene) -> (u64, &'static str) {
     let shades = shade_table_bytes(&scene.balls);
     let queued = queue_frames(scene.width, scene.height) as f64 * pixels as f64;
     let frames = pixels * FRAME_BYTES_PER_PIXEL + (queued * QUEUED_BYTES_PER_PIXEL) as u64;
+    let kept = kept_frames_bytes(scene);
     let parts = [
         (balls, "the balls and their trails"),
         (shades, "the trails' shades"),
         (frames, "the frame buffers"),
+        (kept, "the pilot's kept frames"),
     ];
     let biggest = parts.iter().max_by_key(|p| p.0).map_or("", |p| p.1);
-    (BASE_BYTES + balls + shades + frames, biggest)
+    (BASE_BYTES + balls + shades + frames + kept, biggest)
+}
+
+/// The pilot's frames kept for the run (`crate::physics::replay`): their motions, and the
+/// second set of balls they are played back into, whose trails grow over those frames.
+fn kept_frames_bytes(scene: &Scene) -> u64 {
+    let balls = scene.balls.len().max(1);
+    let frames = (KEPT_BYTES / (balls * BYTES_PER_BALL_FRAME)).min(scene.frames as usize);
+    let motions = (frames * balls * BYTES_PER_BALL_FRAME) as u64;
+    let replayed = scene
+        .balls
+        .iter()
+        .map(|b| size_of::<Ball>() as u64 + Trail::heap_bytes(b.trail.min(frames)));
+    motions + replayed.sum::<u64>()
 }
 
 /// The renderer's shade tables: one per trail colour, as long as its longest trail needs.

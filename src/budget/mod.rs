@@ -28,6 +28,7 @@ use cost::{physics_ns, time_and_size, Activity};
 use memory::memory_of;
 
 use crate::physics::motion::CollisionMode;
+use crate::physics::replay::Playback;
 use crate::scene::Scene;
 
 /// The memory a run may be predicted to need unless told otherwise, bytes (2 GiB).
@@ -144,6 +145,25 @@ impl Estimate {
     /// pilot would cost as much as the run). Exact mode's events have no such bound, so
     /// with them the pilot always runs.
     pub(crate) fn within(scene: &Scene, budget: &Budget) -> Result<Estimate, OverBudget> {
+        Estimate::checked(scene, budget, false).map(|(estimate, _)| estimate)
+    }
+
+    /// `within`, and the frames the pilot stepped, for the run to play back instead of
+    /// stepping them again (`crate::physics::replay`); `None` where no pilot ran or its
+    /// frames did not fit.
+    pub(crate) fn within_keeping(
+        scene: &Scene,
+        budget: &Budget,
+    ) -> Result<(Estimate, Option<Playback>), OverBudget> {
+        Estimate::checked(scene, budget, true)
+    }
+
+    /// `within`, keeping the pilot's frames if `keep`.
+    fn checked(
+        scene: &Scene,
+        budget: &Budget,
+        keep: bool,
+    ) -> Result<(Estimate, Option<Playback>), OverBudget> {
         let (memory, biggest) = memory_of(scene);
         if memory > budget.memory {
             return Err(OverBudget::Memory {
@@ -159,11 +179,16 @@ impl Estimate {
             && bound.seconds <= WARN_SECONDS.min(budget.seconds)
             && bound.gif_bytes <= WARN_GIF_BYTES.min(budget.gif_bytes as f64)
         {
-            return Ok(bound);
+            return Ok((bound, None));
         }
-        let estimate = Estimate::with_memory(scene, memory, biggest, Activity::of(scene));
+        let (activity, playback) = if keep {
+            Activity::of_keeping(scene)
+        } else {
+            (Activity::of(scene), None)
+        };
+        let estimate = Estimate::with_memory(scene, memory, biggest, activity);
         estimate.check_time_and_size(budget)?;
-        Ok(estimate)
+        Ok((estimate, playback))
     }
 
     /// The time and GIF size of `scene` when it does what `activity` says, beside its memory.

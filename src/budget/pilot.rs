@@ -12,6 +12,7 @@
 //! stays at rest; one slowing down goes on slowing; see `Span::rest_of`).
 
 use super::cost::{drawn_pixels, physics_ns, Activity};
+use crate::physics::replay::{KeptFrames, Playback};
 use crate::physics::{maths, Ball, Simulation, Vec2};
 use crate::render::palette::{drawn_dots, fade};
 use crate::scene::{BallSpec, Scene};
@@ -44,7 +45,17 @@ impl Activity {
     /// What a whole run of `scene` does: the pilot's frames, then the rest as the pilot's
     /// last two quarters point (`rest_of`).
     pub(crate) fn of(scene: &Scene) -> Activity {
-        let frames = pilot(scene);
+        Activity::from_pilot(scene, &pilot(scene, false).0)
+    }
+
+    /// `of`, and the pilot's frames kept for the run to play back, where they fit.
+    pub(crate) fn of_keeping(scene: &Scene) -> (Activity, Option<Playback>) {
+        let (frames, playback) = pilot(scene, true);
+        (Activity::from_pilot(scene, &frames), playback)
+    }
+
+    /// What a whole run of `scene` does, from what each of the pilot's `frames` did.
+    fn from_pilot(scene: &Scene, frames: &[Activity]) -> Activity {
         let quarter = frames.len().div_ceil(4);
         let (head, last) = frames.split_at(frames.len() - quarter);
         let before = &head[head.len().saturating_sub(quarter)..];
@@ -54,7 +65,7 @@ impl Activity {
             sum
         };
         let full_quarters = before.len() == quarter;
-        let (mut total, last, before) = (sum(&frames), sum(last), sum(before));
+        let (mut total, last, before) = (sum(frames), sum(last), sum(before));
         // Each quantity on its own: the balls stepped go on as they were while the pixels
         // that change may die away.
         let span = Span {
@@ -135,10 +146,12 @@ impl Span {
 }
 
 /// Runs the physics of `scene` for its first frames (at least one; see `PILOT_NS`) and says
-/// what each did.
-fn pilot(scene: &Scene) -> Vec<Activity> {
+/// what each did; if `keep`, also keeps those frames for the run to play back, where they
+/// fit (`crate::physics::replay`).
+fn pilot(scene: &Scene, keep: bool) -> (Vec<Activity>, Option<Playback>) {
     let canvas = Vec2::new(f64::from(scene.width), f64::from(scene.height));
     let mut simulation = scene.simulation();
+    let mut kept = keep.then(|| KeptFrames::new(&simulation));
     let mut was: Vec<Vec2> = simulation.balls().iter().map(Ball::position).collect();
     let mut frames = Vec::new();
     let mut physics = Activity::default();
@@ -146,6 +159,9 @@ fn pilot(scene: &Scene) -> Vec<Activity> {
         && physics_ns(scene, &physics) < PILOT_NS
     {
         simulation.step();
+        if kept.as_mut().is_some_and(|k| !k.keep(&simulation)) {
+            kept = None; // too big to keep: the run steps every frame itself
+        }
         let mut rect = CoveringRect::EMPTY;
         let (mut changed, mut redrawn) = (0.0, false);
         for ((ball, spec), was) in simulation.balls().iter().zip(&scene.balls).zip(&mut was) {
@@ -171,7 +187,8 @@ fn pilot(scene: &Scene) -> Vec<Activity> {
         physics.add(this);
         frames.push(this);
     }
-    frames
+    let playback = kept.map(|kept| Playback::new(kept, simulation));
+    (frames, playback)
 }
 
 /// How many balls the solver steps now: all but the sleeping ones, and none once every ball

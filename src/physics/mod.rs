@@ -8,7 +8,8 @@
 //! - [`walls`]: the box; [`floor`]: sloped segments (the lesson's "slope" extension).
 //! - [`effects`], [`motion`], [`simulation`]: which forces and boundaries a scene has (an
 //!   absent one costs nothing), how a frame is solved, and all balls advanced one frame: by
-//!   the lesson's own step when the scene is the lesson's, by a solver below otherwise.
+//!   the lesson's own step when the scene is the lesson's, by a solver below otherwise;
+//!   [`replay`]: frames already stepped (by the budget's pilot), shown again unstepped.
 //!
 //! **Beyond the lesson**, each in a folder whose `mod.rs` says what it adds and when a scene
 //! needs it:
@@ -30,6 +31,7 @@ pub mod floor;
 pub mod integrate;
 pub mod maths;
 pub mod motion;
+pub mod replay;
 pub mod simulation;
 pub mod tolerances;
 pub(crate) mod vec2;
