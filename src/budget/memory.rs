@@ -4,6 +4,7 @@
 use std::collections::HashMap;
 use std::mem::size_of;
 
+use super::pilot::PILOT_FRAMES;
 use crate::gif::encoder::queue_frames;
 use crate::physics::contacts::ContactSolver;
 use crate::physics::events::system::EventDriven;
@@ -59,7 +60,8 @@ pub(crate) fn memory_of(scene: &Scene) -> (u64, &'static str) {
 /// second set of balls they are played back into, whose trails grow over those frames.
 fn kept_frames_bytes(scene: &Scene) -> u64 {
     let balls = scene.balls.len().max(1);
-    let frames = (KEPT_BYTES / (balls * BYTES_PER_BALL_FRAME)).min(scene.frames as usize);
+    let piloted = scene.frames.min(PILOT_FRAMES) as usize;
+    let frames = (KEPT_BYTES / (balls * BYTES_PER_BALL_FRAME)).min(piloted);
     let motions = (frames * balls * BYTES_PER_BALL_FRAME) as u64;
     let replayed = scene
         .balls

@@ -22,7 +22,7 @@ use crate::scene::{BallSpec, Scene};
 /// are many.
 const PILOT_NS: f64 = 2.5e8;
 /// The pilot never runs longer than this many frames: scenes that come to rest do so sooner.
-const PILOT_FRAMES: u32 = 100_000;
+pub(super) const PILOT_FRAMES: u32 = 100_000;
 
 impl Activity {
     /// The most the model can say for `scene`: every frame changed, all over the canvas, as
