@@ -3,6 +3,7 @@
 //! the work tally). These modules are private to the crate; the program, the examples, the
 //! benches and the lab never need them, so they are not part of its API.
 
+pub use crate::budget::memory::kept_frames_bytes;
 pub use crate::check::animation::lzw_indices;
 pub use crate::gif::encoder::{queue_frames, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
 pub use crate::gif::interlace::interlace;

@@ -8,10 +8,11 @@ use std::sync::Mutex;
 
 use bouncing_ball::budget::Estimate;
 use bouncing_ball::gif::GifWriter;
+use bouncing_ball::physics::replay::{KeptFrames, Playback};
 use bouncing_ball::physics::{Trail, Vec2};
 use bouncing_ball::render::{Canvas, Renderer};
 use bouncing_ball::scene::file as scene_file;
-use bouncing_ball::testing::queue_frames;
+use bouncing_ball::testing::{kept_frames_bytes, queue_frames};
 
 /// The system allocator, counting every allocation, and the bytes each thread holds.
 struct Counting;
@@ -146,5 +147,44 @@ fn exact_mode_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_l
         "exact mode holds {} bytes a ball at most; the budget counts {}",
         held / 20_000,
         counted / 20_000
+    );
+}
+
+/// The most heap the frames of `scene` take on this thread when its first `kept` frames are
+/// stepped, kept and played back, beyond stepping them alone, bytes.
+fn kept_frames_held(scene: &bouncing_ball::scene::Scene, kept: usize) -> i64 {
+    let peak = |keep: bool| {
+        let before = BYTES_HELD.with(Cell::get);
+        PEAK_HELD.with(|peak| peak.set(before));
+        let mut simulation = scene.simulation();
+        let mut frames = keep.then(|| KeptFrames::new(&simulation, kept));
+        for _ in 0..kept {
+            simulation.step();
+            if let Some(frames) = frames.as_mut() {
+                assert!(frames.keep(&simulation), "the pile's frames fit");
+            }
+        }
+        if let Some(frames) = frames {
+            let mut playback = Playback::new(frames, simulation);
+            for _ in 0..kept {
+                playback.step();
+            }
+        }
+        PEAK_HELD.with(Cell::get) - before
+    };
+    (peak(true) - peak(false)) as i64
+}
+
+#[test]
+fn the_pilots_kept_frames_hold_what_the_memory_budget_counts_for_them_and_at_most_a_quarter_less() {
+    // The pile's 300 frames of 150 balls with trails of 4: their motions, and the balls they
+    // are played back into, trails filled.
+    let _alone = ALLOCATING.lock().unwrap();
+    let scene = scene_file::preset("pile", 1).unwrap();
+    let held = kept_frames_held(&scene, scene.frames as usize);
+    let counted = kept_frames_bytes(&scene) as i64;
+    assert!(
+        held <= counted && counted <= held + held / 4,
+        "the kept frames hold {held} bytes; the budget counts {counted}"
     );
 }

@@ -12,7 +12,7 @@ use bouncing_ball::scene::Scene;
 /// checks each against a simulation stepped frame by frame.
 fn assert_played_back_as_stepped(scene: &Scene, kept: usize, frames: usize) {
     let mut recorded = scene.simulation();
-    let mut kept_frames = KeptFrames::new(&recorded);
+    let mut kept_frames = KeptFrames::new(&recorded, kept);
     for _ in 0..kept {
         recorded.step();
         assert!(kept_frames.keep(&recorded), "a small scene's frames fit");
@@ -60,7 +60,7 @@ fn no_more_frames_are_kept_than_their_size_allows() {
         .map(|i| Ball::new(f64::from(i % 300), 20.0, 1.0, 0.0, 1.0, 3))
         .collect();
     let simulation = Simulation::new(balls, Default::default(), Default::default(), None);
-    let mut kept = KeptFrames::new(&simulation);
+    let mut kept = KeptFrames::new(&simulation, 3);
     let per_frame = 100_000 * 32;
     let fitting = KEPT_BYTES / per_frame;
     assert_eq!(fitting, 2, "the example must straddle the limit");
@@ -70,5 +70,29 @@ fn no_more_frames_are_kept_than_their_size_allows() {
     assert!(
         !kept.keep(&simulation),
         "frame {fitting} would pass {KEPT_BYTES} bytes"
+    );
+}
+
+#[test]
+fn a_run_steps_each_frame_once_though_its_pilot_stepped_them_first() {
+    // Exact mode's pilot always runs; the run plays its frames back rather than stepping
+    // them again, so an exact-mode run of 40 frames takes 40 steps in all.
+    use bouncing_ball::job::{Job, OutputKind, Target};
+    use bouncing_ball::testing::work::{self, Work};
+    let mut scene = preset("pile", 1).expect("the pile preset");
+    scene.motion.collisions = CollisionMode::Exact;
+    scene.frames = 40;
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let mut job = Job::new();
+    job.outputs = vec![Target {
+        kind: OutputKind::Gif,
+        path: dir.path().join("pile.gif"),
+    }];
+    work::reset();
+    bouncing_ball::run::run(&scene, &job).expect("the run writes its GIF");
+    assert_eq!(
+        work::count(Work::BallCollisions),
+        40,
+        "steps in the pilot and the run"
     );
 }

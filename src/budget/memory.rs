@@ -58,7 +58,7 @@ pub(crate) fn memory_of(scene: &Scene) -> (u64, &'static str) {
 
 /// The pilot's frames kept for the run (`crate::physics::replay`): their motions, and the
 /// second set of balls they are played back into, whose trails grow over those frames.
-fn kept_frames_bytes(scene: &Scene) -> u64 {
+pub fn kept_frames_bytes(scene: &Scene) -> u64 {
     let balls = scene.balls.len().max(1);
     let piloted = scene.frames.min(PILOT_FRAMES) as usize;
     let frames = (KEPT_BYTES / (balls * BYTES_PER_BALL_FRAME)).min(piloted);

@@ -18,7 +18,7 @@
 //! - `tiles`: a sweep's panels on one canvas.
 
 mod cost;
-mod memory;
+pub(crate) mod memory;
 mod pilot;
 mod tiles;
 

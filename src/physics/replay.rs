@@ -32,11 +32,17 @@ pub struct KeptFrames {
 }
 
 impl KeptFrames {
-    /// Starts keeping the frames of `simulation`, which has not been stepped yet.
-    pub fn new(simulation: &Simulation) -> KeptFrames {
+    /// Starts keeping the frames of `simulation`, which has not been stepped yet, with room
+    /// for `frames` frames (or as many as fit in [`KEPT_BYTES`]) taken at once: grown frame
+    /// by frame, the buffer would double past what the memory budget counts.
+    pub fn new(simulation: &Simulation, frames: usize) -> KeptFrames {
+        let balls = simulation.balls();
+        let most = KEPT_BYTES / BYTES_PER_BALL_FRAME;
+        let mut motions = Vec::new();
+        motions.reserve_exact(frames.saturating_mul(balls.len()).min(most));
         KeptFrames {
-            balls: simulation.balls().to_vec(),
-            motions: Vec::new(),
+            balls: balls.to_vec(),
+            motions,
             shown: 0,
         }
     }
