@@ -149,14 +149,22 @@ impl Poly {
         if self.at(root) >= 0.0 && self.at(after) < 0.0 {
             return Some((root, after));
         }
-        // Relative rounding, and near 0 the underflow of a product to the nearest subnormal.
-        let rounding = f64::EPSILON * (value.abs() + (slope * root).abs()) + SMALLEST_SUBNORMAL;
-        let spread = LINE_ROOT_ROUNDINGS * (rounding / -slope + f64::EPSILON * root);
-        let (low, high) = ((root - spread).max(0.0), (root + spread).min(end));
+        let (low, high) = self.line_bracket(root, end);
         if self.at(low) >= 0.0 && self.at(high) < 0.0 {
             return Some(self.bisect(low, high));
         }
         Some(self.bisect(0.0, end.min(f64::MAX)))
+    }
+
+    /// The times around `root`, a falling line's root by division, within which its rounding
+    /// lets the crossing lie, inside `[0, end]`: a few units of the value's rounding divided
+    /// by the slope, and of the root's own.
+    fn line_bracket(&self, root: f64, end: f64) -> (f64, f64) {
+        let (value, slope) = (self.c[0], self.c[1]);
+        // Relative rounding, and near 0 the underflow of a product to the nearest subnormal.
+        let rounding = f64::EPSILON * (value.abs() + (slope * root).abs()) + SMALLEST_SUBNORMAL;
+        let spread = LINE_ROOT_ROUNDINGS * (rounding / -slope + f64::EPSILON * root);
+        ((root - spread).max(0.0), (root + spread).min(end))
     }
 
     /// Every root strictly inside `(0, end)` where the sign changes, in increasing order.
@@ -533,5 +541,22 @@ mod tests {
         let (expected, halvings) = halving(&p, 0.0, 3.7348344252490485e-2);
         assert_eq!(found, expected, "expected the crossing {expected:?}");
         assert!(tries <= 10, "{tries} tries, against {halvings} halvings");
+    }
+
+    #[test]
+    fn a_line_through_zero_is_bracketed_where_its_products_underflow() {
+        // A ball at rest against a wall: the distance starts at 0 and falls. Below about 1e-319
+        // the product rounds to −0, which is not below zero: the crossing lies there, and the
+        // bracket must hold it, a few hundred thousand numbers wide rather than all of them.
+        let p = Poly::new(&[0.0, -5.397933131283671e-6]);
+        let (low, high) = p.line_bracket(0.0, 0.83);
+        assert!(
+            p.at(low) >= 0.0 && p.at(high) < 0.0,
+            "[{low:e}, {high:e}] must hold the crossing"
+        );
+        assert!(
+            high.to_bits() - low.to_bits() < 1 << 20,
+            "{high:e} is too far"
+        );
     }
 }
