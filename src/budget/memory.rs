@@ -29,6 +29,13 @@ const STYLE_BYTES_PER_BALL: u64 = 24;
 
 /// The memory `scene` needs at most, bytes, and the part that dominates it, for the message.
 pub(crate) fn memory_of(scene: &Scene) -> (u64, &'static str) {
+    let parts = parts_of(scene);
+    let biggest = parts.iter().max_by_key(|p| p.0).map_or("", |p| p.1);
+    (BASE_BYTES + parts.iter().map(|p| p.0).sum::<u64>(), biggest)
+}
+
+/// What a run of `scene` keeps beyond the program's own, bytes, each part named.
+fn parts_of(scene: &Scene) -> [(u64, &'static str); 4] {
     let pixels = u64::from(scene.width) * u64::from(scene.height);
     let per_ball = (size_of::<BallSpec>() + size_of::<Ball>()) as u64 + STYLE_BYTES_PER_BALL;
     // Each solver says what it keeps per ball.
@@ -41,19 +48,14 @@ pub(crate) fn memory_of(scene: &Scene) -> (u64, &'static str) {
         .balls
         .iter()
         .map(|b| per_ball + solver + Trail::heap_bytes(b.trail) + Canvas::bytes_per_ball(b.trail));
-    let balls: u64 = balls.sum();
-    let shades = shade_table_bytes(&scene.balls);
     let queued = queue_frames(scene.width, scene.height) as f64 * pixels as f64;
     let frames = pixels * FRAME_BYTES_PER_PIXEL + (queued * QUEUED_BYTES_PER_PIXEL) as u64;
-    let kept = kept_frames_bytes(scene);
-    let parts = [
-        (balls, "the balls and their trails"),
-        (shades, "the trails' shades"),
+    [
+        (balls.sum(), "the balls and their trails"),
+        (shade_table_bytes(&scene.balls), "the trails' shades"),
         (frames, "the frame buffers"),
-        (kept, "the pilot's kept frames"),
-    ];
-    let biggest = parts.iter().max_by_key(|p| p.0).map_or("", |p| p.1);
-    (BASE_BYTES + balls + shades + frames + kept, biggest)
+        (kept_frames_bytes(scene), "the pilot's kept frames"),
+    ]
 }
 
 /// The pilot's frames kept for the run (`crate::physics::replay`): their motions, and the
@@ -78,4 +80,31 @@ fn shade_table_bytes(balls: &[BallSpec]) -> u64 {
         *len = (*len).max(ball.trail as u64);
     }
     longest.values().map(|&n| n * (n + 1) / 2).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::file::{parse, preset};
+
+    #[test]
+    fn the_estimate_is_the_programs_own_and_every_part_of_the_scene() {
+        // The pile has each part: balls with trails, shades, frames, and frames to keep.
+        let scene = preset("pile", 1).unwrap();
+        let parts = parts_of(&scene);
+        assert!(parts.iter().all(|p| p.0 > 0), "{parts:?}");
+        let sum: u64 = parts.iter().map(|p| p.0).sum();
+        assert_eq!(memory_of(&scene), (BASE_BYTES + sum, "the frame buffers"));
+    }
+
+    #[test]
+    fn kept_frames_are_counted_up_to_the_size_they_stop_at() {
+        // 100,000 balls keep 3.2 MB a frame: two of the ten frames fit in 8 MiB.
+        let text = "width = 1000\nheight = 1000\nframes = 10\n\
+                    [spawn]\ncount = 100000\nradius = 0.5\nmax_speed = 1.0\ntrail = 5\n";
+        let scene = parse("crowd.toml", text, 1).unwrap();
+        let motions = 2 * 100_000 * BYTES_PER_BALL_FRAME as u64;
+        let balls = 100_000 * (size_of::<Ball>() as u64 + Trail::heap_bytes(2));
+        assert_eq!(kept_frames_bytes(&scene), motions + balls);
+    }
 }
