@@ -29,13 +29,6 @@ const STYLE_BYTES_PER_BALL: u64 = 24;
 
 /// The memory `scene` needs at most, bytes, and the part that dominates it, for the message.
 pub(crate) fn memory_of(scene: &Scene) -> (u64, &'static str) {
-    let parts = parts_of(scene);
-    let biggest = parts.iter().max_by_key(|p| p.0).map_or("", |p| p.1);
-    (BASE_BYTES + parts.iter().map(|p| p.0).sum::<u64>(), biggest)
-}
-
-/// What a run of `scene` keeps beyond the program's own, bytes, each part named.
-fn parts_of(scene: &Scene) -> [(u64, &'static str); 4] {
     let pixels = u64::from(scene.width) * u64::from(scene.height);
     let per_ball = (size_of::<BallSpec>() + size_of::<Ball>()) as u64 + STYLE_BYTES_PER_BALL;
     // Each solver says what it keeps per ball.
@@ -48,14 +41,18 @@ fn parts_of(scene: &Scene) -> [(u64, &'static str); 4] {
         .balls
         .iter()
         .map(|b| per_ball + solver + Trail::heap_bytes(b.trail) + Canvas::bytes_per_ball(b.trail));
+    let balls: u64 = balls.sum();
+    let shades = shade_table_bytes(&scene.balls);
     let queued = queue_frames(scene.width, scene.height) as f64 * pixels as f64;
     let frames = pixels * FRAME_BYTES_PER_PIXEL + (queued * QUEUED_BYTES_PER_PIXEL) as u64;
-    [
-        (balls.sum(), "the balls and their trails"),
-        (shade_table_bytes(&scene.balls), "the trails' shades"),
+    let parts = [
+        (balls, "the balls and their trails"),
+        (shades, "the trails' shades"),
         (frames, "the frame buffers"),
         (kept_frames_bytes(scene), "the pilot's kept frames"),
-    ]
+    ];
+    let biggest = parts.iter().max_by_key(|p| p.0).map_or("", |p| p.1);
+    (BASE_BYTES + parts.iter().map(|p| p.0).sum::<u64>(), biggest)
 }
 
 /// The pilot's frames kept for the run (`crate::physics::replay`): their motions, and the
@@ -88,13 +85,18 @@ mod tests {
     use crate::scene::file::{parse, preset};
 
     #[test]
-    fn the_estimate_is_the_programs_own_and_every_part_of_the_scene() {
-        // The pile has each part: balls with trails, shades, frames, and frames to keep.
-        let scene = preset("pile", 1).unwrap();
-        let parts = parts_of(&scene);
-        assert!(parts.iter().all(|p| p.0 > 0), "{parts:?}");
-        let sum: u64 = parts.iter().map(|p| p.0).sum();
-        assert_eq!(memory_of(&scene), (BASE_BYTES + sum, "the frame buffers"));
+    fn the_estimate_grows_with_the_frames_by_the_kept_frames_alone() {
+        // The pile for its 300 frames and for 1: only the frames the pilot keeps differ.
+        let long = preset("pile", 1).unwrap();
+        let short = Scene {
+            frames: 1,
+            ..long.clone()
+        };
+        let grown = i128::from(memory_of(&long).0) - i128::from(memory_of(&short).0);
+        let kept = i128::from(kept_frames_bytes(&long)) - i128::from(kept_frames_bytes(&short));
+        assert!(kept > 0, "300 frames keep more than 1");
+        assert_eq!(grown, kept);
+        assert_eq!(memory_of(&long).1, "the frame buffers");
     }
 
     #[test]
