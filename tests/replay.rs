@@ -55,15 +55,19 @@ fn no_kept_frames_step_from_the_start() {
 
 #[test]
 fn no_more_frames_are_kept_than_their_size_allows() {
-    // 100,000 balls keep 3.2 MB a frame: two frames fit in 8 MiB, a third does not.
-    let balls = (0..100_000)
+    // 65,536 balls keep 2 MiB a frame: four frames fill 8 MiB exactly, a fifth does not fit.
+    let balls = (0..65_536)
         .map(|i| Ball::new(f64::from(i % 300), 20.0, 1.0, 0.0, 1.0, 3))
         .collect();
     let simulation = Simulation::new(balls, Default::default(), Default::default(), None);
-    let mut kept = KeptFrames::new(&simulation, 3);
-    let per_frame = 100_000 * 32;
+    let mut kept = KeptFrames::new(&simulation, 5);
+    let per_frame = 65_536 * 32;
     let fitting = KEPT_BYTES / per_frame;
-    assert_eq!(fitting, 2, "the example must straddle the limit");
+    assert_eq!(
+        fitting * per_frame,
+        KEPT_BYTES,
+        "the example must fill the limit exactly"
+    );
     for frame in 0..fitting {
         assert!(kept.keep(&simulation), "frame {frame} fits");
     }

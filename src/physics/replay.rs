@@ -60,14 +60,6 @@ impl KeptFrames {
         true
     }
 
-    /// How many frames are kept.
-    fn frames(&self) -> usize {
-        self.motions
-            .len()
-            .checked_div(self.balls.len())
-            .unwrap_or(0)
-    }
-
     /// Shows the next kept frame; `false` if every kept frame has been shown.
     fn show_next(&mut self) -> bool {
         let n = self.balls.len();
@@ -96,8 +88,10 @@ impl Playback {
     /// Plays `kept` back, then steps `simulation`, which must be the simulation those frames
     /// were kept of, as the last of them left it.
     pub fn new(kept: KeptFrames, simulation: Simulation) -> Playback {
-        let kept = (kept.frames() > 0).then_some(kept);
-        Playback { kept, simulation }
+        Playback {
+            kept: Some(kept),
+            simulation,
+        }
     }
 
     /// Steps `simulation` from its start: nothing to play back.

@@ -521,7 +521,7 @@ mod tests {
             let (expected, halvings) = halving(&p, left, right);
             assert_eq!(found, expected, "{c:?}: expected the crossing {expected:?}");
             assert!(
-                tries <= 20 && 2 * tries <= halvings,
+                tries > 0 && tries <= 20 && 2 * tries <= halvings,
                 "{c:?}: {tries} tries, against {halvings} halvings"
             );
         }
@@ -540,7 +540,10 @@ mod tests {
         let (found, tries) = p.narrow(0.0, 3.7348344252490485e-2);
         let (expected, halvings) = halving(&p, 0.0, 3.7348344252490485e-2);
         assert_eq!(found, expected, "expected the crossing {expected:?}");
-        assert!(tries <= 10, "{tries} tries, against {halvings} halvings");
+        assert!(
+            tries > 0 && tries <= 10,
+            "{tries} tries, against {halvings} halvings"
+        );
     }
 
     #[test]
@@ -557,6 +560,26 @@ mod tests {
         assert!(
             high.to_bits() - low.to_bits() < 1 << 20,
             "{high:e} is too far"
+        );
+    }
+
+    #[test]
+    fn a_gentle_lines_bracket_holds_its_crossing_a_few_hundred_numbers_wide() {
+        // The line of the test above: the root by division is a few numbers off the crossing.
+        let p = Poly::new(&[2.1438598071437838, -0.1814002630556213]);
+        let root = 2.1438598071437838 / 0.1814002630556213;
+        let (low, high) = p.line_bracket(root, f64::INFINITY);
+        assert!(
+            p.at(low) >= 0.0 && p.at(high) < 0.0,
+            "[{low}, {high}] must hold the crossing"
+        );
+        assert!(
+            low < root && root < high,
+            "{root} must lie inside [{low}, {high}]"
+        );
+        assert!(
+            high.to_bits() - low.to_bits() < 1000,
+            "[{low}, {high}] is too wide"
         );
     }
 }
