@@ -338,4 +338,24 @@ mod tests {
             );
         }
     }
+
+    #[test]
+    fn a_pilot_that_slowed_over_its_last_two_quarters_goes_on_slowing() {
+        // Eight frames whose events halve every two frames, in a run of 10,000 frames: two
+        // whole quarters, so the rest goes on slowing, far below the last quarter's pace
+        // (one event a frame) kept for the 9,992 frames after the pilot.
+        let scene = Scene {
+            frames: 10_000,
+            ..crate::scene::file::preset("lesson", 1).unwrap()
+        };
+        let frames = [8.0, 8.0, 4.0, 4.0, 2.0, 2.0, 1.0, 1.0].map(|events| Activity {
+            events,
+            ..Activity::default()
+        });
+        let total = Activity::from_pilot(&scene, &frames).events;
+        assert!(
+            (30.0..100.0).contains(&total),
+            "30 events in the pilot, then slowing: got {total}"
+        );
+    }
 }

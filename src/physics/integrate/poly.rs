@@ -466,9 +466,10 @@ mod tests {
     }
 
     /// Monotone pieces met by exact mode's pile (a wall along a parabola, two balls along
-    /// Verlet and RK4 flights), each with the bracket `Poly::first_crossing` gave it.
-    const PIECES: [(&[f64], f64, f64); 6] = [
-        (&[1.240051333910273, -3.163254841543085, -0.25], 0.0, 1.0),
+    /// Verlet and RK4 flights), each with the bracket `Poly::first_crossing` gave it and the
+    /// tries false position took when measured (halving takes 53 to 62).
+    const PIECES: [(&[f64], f64, f64, u32); 6] = [
+        (&[1.240051333910273, -3.163254841543085, -0.25], 0.0, 1.0, 9),
         (
             &[
                 1.7629330774629235,
@@ -478,6 +479,7 @@ mod tests {
             ],
             0.0,
             0.7500357291111417,
+            8,
         ),
         (
             &[
@@ -489,6 +491,7 @@ mod tests {
             ],
             5.115973538622624e-5,
             0.6257723500324519,
+            20,
         ),
         (
             &[
@@ -499,6 +502,7 @@ mod tests {
             ],
             0.20375414432086553,
             0.9748985108052092,
+            15,
         ),
         (
             &[
@@ -509,20 +513,23 @@ mod tests {
             ],
             6.183124927972044e-4,
             1.0,
+            20,
         ),
-        (&[1e-300, -1.0], 0.0, 1.0),
+        (&[1e-300, -1.0], 0.0, 1.0, 2),
     ];
 
     #[test]
-    fn false_position_ends_where_halving_does_in_at_most_half_the_tries() {
-        for (c, left, right) in PIECES {
+    fn false_position_ends_where_halving_does_in_the_tries_it_took_when_measured() {
+        // Each piece's count is a bound: a search that lost the Illinois rule on either end,
+        // or its nudge past a zero, takes more on at least one of them.
+        for (c, left, right, most) in PIECES {
             let p = Poly::new(c);
             let (found, tries) = p.narrow(left, right);
             let (expected, halvings) = halving(&p, left, right);
             assert_eq!(found, expected, "{c:?}: expected the crossing {expected:?}");
             assert!(
-                tries > 0 && tries <= 20 && 2 * tries <= halvings,
-                "{c:?}: {tries} tries, against {halvings} halvings"
+                tries > 0 && tries <= most && 2 * tries <= halvings,
+                "{c:?}: {tries} tries (at most {most}), against {halvings} halvings"
             );
         }
     }
