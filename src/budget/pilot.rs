@@ -151,12 +151,14 @@ impl Span {
 fn pilot(scene: &Scene, keep: bool) -> (Vec<Activity>, Option<Playback>) {
     let canvas = Vec2::new(f64::from(scene.width), f64::from(scene.height));
     let mut simulation = scene.simulation();
-    let piloted = scene.frames.min(PILOT_FRAMES) as usize;
-    let mut kept = keep.then(|| KeptFrames::new(&simulation, piloted));
+    let most = scene.frames.min(PILOT_FRAMES) as usize;
+    let mut kept = keep.then(|| KeptFrames::new(&simulation, most));
     let mut was: Vec<Vec2> = simulation.balls().iter().map(Ball::position).collect();
     let mut frames = Vec::new();
     let mut physics = Activity::default();
-    while frames.len() < piloted && physics_ns(scene, &physics) < PILOT_NS {
+    while frames.len() < scene.frames.min(PILOT_FRAMES) as usize
+        && physics_ns(scene, &physics) < PILOT_NS
+    {
         simulation.step();
         if kept.as_mut().is_some_and(|k| !k.keep(&simulation)) {
             kept = None; // too big to keep: the run steps every frame itself
