@@ -589,4 +589,19 @@ mod tests {
             "[{low}, {high}] is too wide"
         );
     }
+
+    #[test]
+    fn a_left_end_at_zero_far_from_the_crossing_takes_at_most_twice_halvings_tries() {
+        // −1e−300·t rounds to −0 (not below zero) up to 2.5e−24: the crossing lies most of
+        // the way from 0 to 1 counted in numbers, where steps that double cost as many tries
+        // as halving, and halving then as many again.
+        let p = Poly::new(&[0.0, -1e-300]);
+        let (found, tries) = p.narrow(0.0, 1.0);
+        let (expected, halvings) = halving(&p, 0.0, 1.0);
+        assert_eq!(found, expected, "expected the crossing {expected:?}");
+        assert!(
+            tries <= 2 * halvings,
+            "{tries} tries, against {halvings} halvings"
+        );
+    }
 }
