@@ -203,9 +203,12 @@ impl Poly {
     /// chord lands beyond the root and both ends close in. Where the polynomial is monotone,
     /// that takes a handful of tries where halving the bracket takes up to 64. Once the left
     /// end's value rounds to exactly zero the chord cannot move it: the numbers after it are
-    /// tried 1, 2, 4, … apart, since the first one below zero is usually a few numbers on. A
-    /// try that would not land strictly inside the bracket is replaced by the `midpoint`, as
-    /// are chords after [`MAX_CHORDS`], so the search always ends.
+    /// tried 1, 2, 4, … apart, since the first one below zero is usually a few numbers on
+    /// (where it is far, this costs up to halving's tries again). Those steps stay below the
+    /// `midpoint`, compared as bit patterns (which order times as numbers), so they never
+    /// leave the bracket. A try that would not land strictly inside the bracket is replaced by
+    /// the midpoint, as are chords after [`MAX_CHORDS`]: at most 64 chords, 64 steps and 64
+    /// halvings, so the search always ends.
     fn bisect(&self, left: f64, right: f64) -> (f64, f64) {
         self.narrow(left, right).0
     }
@@ -222,10 +225,10 @@ impl Poly {
             }
             tries += 1;
             let chord = left + (right - left) * (at_left / (at_left - at_right));
-            let ahead = f64::from_bits(left.to_bits().saturating_add(stride));
-            let t = if at_left == 0.0 && ahead < right {
+            let ahead = left.to_bits().saturating_add(stride);
+            let t = if at_left == 0.0 && ahead < mid.to_bits() {
                 stride *= 2;
-                ahead
+                f64::from_bits(ahead)
             } else if chords < MAX_CHORDS && chord > left && chord < right {
                 chords += 1;
                 chord
