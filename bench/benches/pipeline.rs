@@ -1,5 +1,6 @@
-//! The pipeline's cost on the lesson's scene: one frame rendered, one frame compressed, and
-//! the whole 200-frame scene simulated, rendered and encoded into memory.
+//! The pipeline's cost on the lesson's scene: one frame rendered, one frame compressed (and
+//! in both row orders, one after the other and as a pair), and the whole 200-frame scene
+//! simulated, rendered and encoded into memory.
 //!
 //! Run: `cargo bench --bench pipeline` (about 15 s; add `-- --warm-up-time 1
 //! --measurement-time 3` for a quicker look).
@@ -9,6 +10,7 @@ use bouncing_ball::gif::GifWriter;
 use bouncing_ball::physics::simulation::Simulation;
 use bouncing_ball::render::{IndexedFrame, Renderer};
 use bouncing_ball::scene::file as scene_file;
+use bouncing_ball::testing::interlace;
 use bouncing_ball::Scene;
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 
@@ -72,6 +74,31 @@ fn pipeline(c: &mut Criterion) {
                 Choices::GREEDY,
                 usize::MAX,
                 &mut out,
+            )
+        })
+    });
+
+    // A layout's two row orders, as the encoder codes every frame.
+    let mut interlaced = Vec::new();
+    interlace(frame.as_raw(), scene.width as usize, &mut interlaced);
+    let orders = [frame.as_raw(), &interlaced[..]];
+    let (mut other, mut other_out) = (Lzw::new(), Vec::new());
+    group.throughput(Throughput::Elements(2 * pixels));
+    group.bench_function("both row orders, one after the other", |b| {
+        b.iter(|| {
+            orders.map(|pixels| {
+                lzw.compress(code_size, pixels, Choices::GREEDY, usize::MAX, &mut out)
+            })
+        })
+    });
+    group.bench_function("both row orders as a pair", |b| {
+        b.iter(|| {
+            lzw.compress_pair(
+                &mut other,
+                code_size,
+                orders,
+                usize::MAX,
+                [&mut out, &mut other_out],
             )
         })
     });

@@ -15,7 +15,7 @@ use crate::render::Canvas;
 use crate::scene::{BallSpec, Rgb, Scene};
 
 /// What the program itself takes before any scene: code, stacks, the threads' arenas and
-/// their LZW coders (measured: 10 to 17 MB peak for the small presets).
+/// their LZW coders (measured: 7 to 20 MB peak for the small presets).
 const BASE_BYTES: u64 = 20 << 20;
 /// Bytes per pixel of frame buffers outside the GIF queue: the frame being drawn, the
 /// background it is cleared to, the frame the GIF shows, and at the end the RGB copy and the
