@@ -25,14 +25,14 @@ use crate::trace;
 /// output file is left half-written and no existing file is changed.
 pub fn run(scene: &Scene, job: &Job) -> Result<Summary, RunError> {
     scene.validate()?;
+    let files = job.open()?;
     let (estimate, playback) = Estimate::within_keeping(scene, &job.budget)?;
-    job.check()?;
     let renderer = Renderer::new(scene)?;
     let plot = job
         .path(OutputKind::Plot)
         .map(|path| Plot::new(scene, path));
     let plot = plot.transpose()?;
-    let files = job.open(&estimate.warnings(scene))?;
+    job.warn(&estimate.warnings(scene));
     let mut writers = Writers::open(scene, &renderer, plot, &files)?;
     let playback = playback.unwrap_or_else(|| Playback::stepping(scene.simulation()));
     let canvas = animate(scene, job, playback, &renderer, &mut writers)?;

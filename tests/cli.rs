@@ -267,6 +267,37 @@ fn a_run_predicted_beyond_the_time_budget_is_refused_before_any_work() {
 }
 
 #[test]
+fn an_output_that_cannot_be_written_is_refused_before_the_budget_runs_its_pilot() {
+    // Exact mode's budget runs a pilot of the physics; this one would end in a refusal for
+    // time. A missing folder is found first, in one line, for each command that writes.
+    let dir = temp_dir();
+    let exact = ["-p", "pile", "--collisions", "exact"];
+    // (compare's methods set the collisions themselves; its reference is exact.)
+    let commands = [
+        &exact[..],
+        &["compare", "-p", "pile"],
+        &["sweep", "damping=0.5,0.9"],
+    ];
+    for command in commands {
+        let mut list = command.to_vec();
+        if command[0] == "sweep" {
+            list.extend_from_slice(&exact);
+        }
+        list.extend_from_slice(&["--time-budget", "0.001", "-o", "no/such/folder/x.gif"]);
+        let output = run_in(dir.path(), &list);
+        let err = stderr(&output);
+        assert_eq!(output.status.code(), Some(1), "{list:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{list:?}: one line: {err:?}");
+        assert!(
+            err.contains("there is no folder no/such/folder"),
+            "{list:?}: {err}"
+        );
+    }
+    let files: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert!(files.is_empty(), "left files behind: {files:?}");
+}
+
+#[test]
 fn the_summary_names_every_file_written() {
     let dir = temp_dir();
     let args = [

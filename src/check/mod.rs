@@ -67,7 +67,7 @@ pub fn check(
         ..*options
     };
     // Opened before any work, so a --diff that cannot be written is said first.
-    let files = job.open(&[])?;
+    let files = job.open()?;
     let mut picture = None;
     let mut verdicts = Vec::new();
     for path in theirs {

@@ -85,6 +85,8 @@ pub(crate) fn compare(
 ) -> Result<Comparison, RunError> {
     scene.validate()?;
     check_size(scene)?;
+    let plot_format = job.path(OutputKind::Plot).map(Format::of).transpose()?;
+    let files = job.open()?;
     // Each method's memory and GIF size; the time is the whole comparison's, checked next.
     let each = Budget {
         seconds: f64::INFINITY,
@@ -94,10 +96,8 @@ pub(crate) fn compare(
         Estimate::within(&method.on(scene), &each)?;
     }
     let seconds = estimate::check(scene, methods, &job.budget)?;
-    job.check()?;
-    let plot_format = job.path(OutputKind::Plot).map(Format::of).transpose()?;
     let warnings = [frame_ms_warning(scene), long_work_warning(seconds)];
-    let files = job.open(&warnings.into_iter().flatten().collect::<Vec<_>>())?;
+    job.warn(&warnings.into_iter().flatten().collect::<Vec<_>>());
 
     let bare = without_trails(scene);
     let reference = Reference::of(&bare, methods, job)?;

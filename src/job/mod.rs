@@ -134,18 +134,21 @@ impl Job {
         Ok(output::check(&list, self.scene_file.as_deref())?)
     }
 
-    /// Checks every output path, opens each output beside its target and prints `warnings`
-    /// (unless silent).
-    pub(crate) fn open(&self, warnings: &[String]) -> Result<Files, RunError> {
+    /// Checks every output path and opens each output beside its target: before any work,
+    /// so that an output that cannot be written is refused at once.
+    pub(crate) fn open(&self) -> Result<Files, RunError> {
         self.check()?;
-        let files = Files::create(&self.outputs)?;
-        // Only once nothing more can be refused, so a refusal stays a single line.
+        Ok(Files::create(&self.outputs)?)
+    }
+
+    /// Prints `warnings` (unless silent): once nothing more can be refused, so that a
+    /// refusal stays a single line.
+    pub(crate) fn warn(&self, warnings: &[String]) {
         if self.talk {
             for warning in warnings {
                 eprintln!("warning: {warning}");
             }
         }
-        Ok(files)
     }
 
     /// `Stopped` at `frame` of `frames` if a signal has come.

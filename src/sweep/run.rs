@@ -54,8 +54,9 @@ fn write(
     let frames = panels.iter().map(|p| p.scene.frames).max().unwrap_or(1);
     let scenes: Vec<&Scene> = panels.iter().map(|p| &p.scene).collect();
     let (width, height) = tiling.size();
+    let files = job.open()?;
     let estimate = Estimate::of_tiles(&scenes, width, height, &job.budget)?;
-    let files = job.open(&estimate.warnings(&panels[0].scene))?;
+    job.warn(&estimate.warnings(&panels[0].scene));
     let palette = tiling.palette();
     let mut gif = files.start_gif(tiling.size(), palette, frame_ms)?;
     let last = animate(panels, renderers, tiling, frames, job, &mut gif)?;
