@@ -333,3 +333,46 @@ fn runs(pixels: &[u8]) -> usize {
 fn largest(pixels: &[u8]) -> u8 {
     pixels.iter().copied().max().unwrap_or(0)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::random::Random;
+
+    #[test]
+    fn a_tie_between_the_row_orders_goes_to_the_normal_order() {
+        // One index throughout: both orders read the same pixels and code to the same bytes.
+        let frame = vec![3; 64 * 64];
+        let mut best = Vec::new();
+        let encoding = Coder::default().encode_cheapest(&frame, 64, None, 16, &mut best);
+        assert_eq!(
+            encoding,
+            Encoding::default(),
+            "normal order, nothing transparent"
+        );
+    }
+
+    #[test]
+    fn a_frame_whose_first_part_holds_the_rest_keeps_its_full_dictionary() {
+        // Noise fills the dictionary, and the same noise again is coded best with the strings
+        // it left there; cleared, the dictionary would learn them afresh.
+        let mut random = Random::new(4);
+        let part: Vec<u8> = (0..200 * 100)
+            .map(|_| (random.next_u64() % 16) as u8)
+            .collect();
+        let frame = [&part[..], &part[..]].concat();
+        let (mut lzw, mut greedy, mut kept) = (Lzw::new(), Vec::new(), Vec::new());
+        lzw.compress(4, &frame, Choices::GREEDY, usize::MAX, &mut greedy);
+        lzw.compress(4, &frame, Choices::KEEP_FULL, usize::MAX, &mut kept);
+        assert!(kept.len() < greedy.len(), "the repeat is cheaper kept full");
+        let mut best = Vec::new();
+        Coder::default().encode_cheapest(&frame, 200, None, 16, &mut best);
+        assert!(
+            best.len() <= kept.len(),
+            "{} B chosen, where the full dictionary kept takes {} B (cleared: {} B)",
+            best.len(),
+            kept.len(),
+            greedy.len()
+        );
+    }
+}
