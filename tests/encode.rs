@@ -567,6 +567,40 @@ fn in_a_pair_the_coding_that_reaches_the_budget_gives_up_and_the_other_goes_on()
 }
 
 #[test]
+fn the_end_code_is_twelve_bits_wide_when_the_dictionary_ends_full() {
+    // A dictionary kept full holds 4096 codes at the end: the decoder reads the end code at
+    // 12 bits, and a 13th would spill into a byte of its own now and then. With 4-bit indices
+    // the end code is 17 (0b1_0001): its top set bit is the data's last set bit, and the
+    // code's 7 zero bits above it end the data, rounded up to a whole byte.
+    let mut random = Random::new(10);
+    let (mut lzw, mut data) = (Lzw::new(), Vec::new());
+    for extra in 0..24 {
+        let height = 100 + extra;
+        let noise: Vec<u8> = (0..200 * height)
+            .map(|_| (random.next_u64() % 16) as u8)
+            .collect();
+        lzw.compress(4, &noise, Choices::KEEP_FULL, usize::MAX, &mut data);
+        let codes = &data[1..];
+        let last = codes
+            .iter()
+            .rposition(|&byte| byte != 0)
+            .expect("some codes");
+        let last_set_bit = 8 * last + 7 - codes[last].leading_zeros() as usize;
+        assert_eq!(
+            codes.len(),
+            (last_set_bit + 8).div_ceil(8),
+            "{} pixels: bytes of codes",
+            noise.len()
+        );
+        assert!(
+            decode_lzw(200, height, 16, &data) == noise,
+            "{} pixels decode",
+            noise.len()
+        );
+    }
+}
+
+#[test]
 fn interlaced_order_is_every_eighth_row_then_every_fourth_then_every_second_then_the_rest() {
     let rows: Vec<u8> = (0..10).flat_map(|row| [row, row]).collect();
     let mut out = Vec::new();
