@@ -41,9 +41,9 @@ pub(crate) const BALL_TOUCH_GAP: f64 = 1e-9;
 pub(crate) const HORNER_ROUNDING: f64 = 1e-14;
 
 /// How many of its estimated roundings either side of a straight line's root, found by one
-/// division, the bracket reaches that bisection narrows down to adjacent numbers: the division
-/// and the line's value each round a few times. Too narrow a bracket misses the root and the
-/// whole step is bisected instead; a wider one costs only a few more halvings.
+/// division, the bracket reaches that the root search narrows down to adjacent numbers: the
+/// division and the line's value each round a few times. Too narrow a bracket misses the root
+/// and the whole step is searched instead; a wider one costs only a few more tries.
 pub(crate) const LINE_ROOT_ROUNDINGS: f64 = 4.0;
 
 // ---- Exact mode's ball-ball events ----

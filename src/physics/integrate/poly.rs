@@ -3,8 +3,8 @@
 //! drop below zero?
 //!
 //! The method needs no formula per degree: a polynomial is monotone between the roots of its
-//! derivative, so on each of those pieces it crosses zero at most once, and bisection finds
-//! that crossing to the last bit. The derivative's roots are found the same way, one degree down.
+//! derivative, so on each of those pieces it crosses zero at most once, and a search by false
+//! position finds that crossing to the last bit. The derivative's roots are found the same way, one degree down.
 //! A polynomial further from zero than it can move in the interval (`reach`) has no crossing,
 //! and its derivatives' roots are not looked for.
 //!
@@ -113,7 +113,7 @@ impl Poly {
             .chain([end].iter())
         {
             if self.at(right) < 0.0 {
-                return Some(self.bisect(left, right));
+                return Some(self.crossing_between(left, right));
             }
             left = right;
         }
@@ -137,7 +137,7 @@ impl Poly {
     /// `first_crossing` for a straight line: the root by one division, checked against its
     /// neighbours. When the line changes less than its own rounding from one number to the
     /// next (a gentle slope far ahead), the root is only known to a few units of rounding
-    /// divided by the slope: bisection narrows that small bracket down to adjacent numbers.
+    /// divided by the slope: the search narrows that small bracket down to adjacent numbers.
     /// `end` may be infinite (a straight flight predicted without a horizon).
     fn line_crossing(&self, end: f64) -> Option<(f64, f64)> {
         let (value, slope) = (self.c[0], self.c[1]);
@@ -151,9 +151,9 @@ impl Poly {
         }
         let (low, high) = self.line_bracket(root, end);
         if self.at(low) >= 0.0 && self.at(high) < 0.0 {
-            return Some(self.bisect(low, high));
+            return Some(self.crossing_between(low, high));
         }
-        Some(self.bisect(0.0, end.min(f64::MAX)))
+        Some(self.crossing_between(0.0, end.min(f64::MAX)))
     }
 
     /// The times around `root`, a falling line's root by division, within which its rounding
@@ -182,9 +182,9 @@ impl Poly {
             let (a, b) = (self.at(left), self.at(right));
             if (a < 0.0) != (b < 0.0) && a != 0.0 && b != 0.0 {
                 let (root, _) = if a > 0.0 {
-                    self.bisect(left, right)
+                    self.crossing_between(left, right)
                 } else {
-                    (*self * -1.0).bisect(left, right)
+                    (*self * -1.0).crossing_between(left, right)
                 };
                 roots.t[roots.len] = root;
                 roots.len += 1;
@@ -209,11 +209,11 @@ impl Poly {
     /// leave the bracket. A try that would not land strictly inside the bracket is replaced by
     /// the midpoint, as are chords after [`MAX_CHORDS`]: at most 64 chords, 64 steps and 64
     /// halvings, so the search always ends.
-    fn bisect(&self, left: f64, right: f64) -> (f64, f64) {
+    fn crossing_between(&self, left: f64, right: f64) -> (f64, f64) {
         self.narrow(left, right).0
     }
 
-    /// `bisect`, and how many points it evaluated on the way.
+    /// `crossing_between`, and how many points it evaluated on the way.
     fn narrow(&self, mut left: f64, mut right: f64) -> ((f64, f64), u32) {
         let mut tries = 0;
         let (mut at_left, mut at_right) = (self.at(left), self.at(right));
@@ -253,13 +253,13 @@ impl Poly {
     }
 }
 
-/// The most chords `Poly::bisect` tries before it only halves: as many as halving needs.
+/// The most chords `Poly::crossing_between` tries before it only halves: as many as halving needs.
 const MAX_CHORDS: u32 = 64;
 
 /// The smallest positive `f64`: the most a product rounds by near 0, where it underflows.
 const SMALLEST_SUBNORMAL: f64 = f64::from_bits(1);
 
-/// Which end of its bracket `Poly::bisect`'s last try kept.
+/// Which end of its bracket `Poly::crossing_between`'s last try kept.
 #[derive(Clone, Copy, PartialEq)]
 enum Kept {
     Neither,
@@ -450,8 +450,8 @@ mod tests {
         );
     }
 
-    /// Bisection by `midpoint` alone, the search `Poly::bisect` replaced: the same answer on
-    /// a monotone piece, in up to 64 halvings.
+    /// Bisection by `midpoint` alone, the search `Poly::crossing_between` replaced: the same
+    /// answer on a monotone piece, in up to 64 halvings.
     fn halving(p: &Poly, mut left: f64, mut right: f64) -> ((f64, f64), u32) {
         let mut tries = 0;
         loop {
