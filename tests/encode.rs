@@ -259,6 +259,14 @@ fn random_frame(width: u32, height: u32, colours: usize, random: &mut Random) ->
     IndexedFrame::from_raw(width, height, pixels).unwrap()
 }
 
+/// `pixels` seeded random indices below 16: strings that seldom repeat, which fill the
+/// dictionary quickly.
+fn noise(pixels: usize, random: &mut Random) -> Vec<u8> {
+    (0..pixels)
+        .map(|_| (random.next_u64() % 16) as u8)
+        .collect()
+}
+
 #[test]
 fn lzw_data_decodes_to_the_same_indices_for_every_code_size_and_across_dictionary_resets() {
     let mut random = Random::new(6);
@@ -482,9 +490,7 @@ fn code_alone(code_size: u8, pixels: &[u8], budget: usize) -> (Vec<u8>, Option<u
 #[test]
 fn two_images_coded_as_a_pair_are_the_same_bytes_and_forks_as_each_coded_alone() {
     let mut random = Random::new(8);
-    let noise: Vec<u8> = (0..150 * 100)
-        .map(|_| (random.next_u64() % 16) as u8)
-        .collect();
+    let noise = noise(150 * 100, &mut random);
     let runs = random_frame(150, 100, 16, &mut random).into_raw();
     // Equal lengths (a layout's two row orders), one shorter than the other (the longer goes
     // on alone), an empty one, and noise that fills the dictionary (every fork taken).
@@ -537,9 +543,7 @@ fn two_images_coded_as_a_pair_are_the_same_bytes_and_forks_as_each_coded_alone()
 fn in_a_pair_the_coding_that_reaches_the_budget_gives_up_and_the_other_goes_on() {
     let mut random = Random::new(9);
     let runs = random_frame(150, 100, 16, &mut random).into_raw();
-    let noise: Vec<u8> = (0..150 * 100)
-        .map(|_| (random.next_u64() % 16) as u8)
-        .collect();
+    let noise = noise(150 * 100, &mut random);
     let (small, _, _) = code_alone(4, &runs, usize::MAX);
     let (big, _, _) = code_alone(4, &noise, usize::MAX);
     assert!(small.len() < big.len(), "runs pack better than noise");
@@ -575,10 +579,8 @@ fn the_end_code_is_twelve_bits_wide_when_the_dictionary_ends_full() {
     let mut random = Random::new(10);
     let (mut lzw, mut data) = (Lzw::new(), Vec::new());
     for extra in 0..24 {
-        let height = 100 + extra;
-        let noise: Vec<u8> = (0..200 * height)
-            .map(|_| (random.next_u64() % 16) as u8)
-            .collect();
+        let height: u16 = 100 + extra;
+        let noise = noise(200 * usize::from(height), &mut random);
         lzw.compress(4, &noise, Choices::KEEP_FULL, usize::MAX, &mut data);
         let codes = &data[1..];
         let last = codes
@@ -715,9 +717,7 @@ fn a_fork_into_a_full_dictionary_taken_after_another_coding_is_refused() {
     // The coder keeps a full dictionary only until its next coding: a fork into it taken later
     // would start from another image's strings and write a wrong GIF, so it is refused.
     let mut random = Random::new(5);
-    let noise: Vec<u8> = (0..200 * 150)
-        .map(|_| (random.next_u64() % 16) as u8)
-        .collect();
+    let noise = noise(200 * 150, &mut random);
     let (mut lzw, mut first, mut other, mut resumed) = (Lzw::new(), vec![], vec![], vec![]);
     lzw.compress(4, &noise, Choices::GREEDY, usize::MAX, &mut first);
     let fork = lzw.forks().full.expect("noise fills the dictionary");
