@@ -156,7 +156,9 @@ fn pilot(scene: &Scene, keep: bool) -> (Vec<Activity>, Option<Playback>) {
     let mut was: Vec<Vec2> = simulation.balls().iter().map(Ball::position).collect();
     let mut frames = Vec::new();
     let mut physics = Activity::default();
-    while frames.len() < most && physics_ns(scene, &physics) < PILOT_NS {
+    while frames.len() < scene.frames.min(PILOT_FRAMES) as usize
+        && physics_ns(scene, &physics) < PILOT_NS
+    {
         simulation.step();
         if kept.as_mut().is_some_and(|k| !k.keep(&simulation)) {
             kept = None; // too big to keep: the run steps every frame itself
