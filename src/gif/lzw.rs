@@ -183,8 +183,8 @@ impl Lzw {
     /// The same as [`Lzw::compress`] on `pixels[0]` with `self` and on `pixels[1]` with
     /// `other`, greedy, both within `budget`, but in one loop that reads a pixel of each in
     /// turn. A coding waits on memory at every pixel (the next lookup needs the code the last
-    /// one found); the two codings' waits overlap, so the pair takes about three quarters of
-    /// the time of one after the other (docs/gif.md).
+    /// one found); the two codings' waits overlap, so the pair takes half to three quarters
+    /// of the time of one after the other (docs/gif.md).
     pub fn compress_pair(
         &mut self,
         other: &mut Lzw,
@@ -198,9 +198,9 @@ impl Lzw {
         let mut second = other.begin(min_code_size, pixels[1], greedy, budget, other_out);
         // Both walk on while both have pixels left; where one's string stops growing, it
         // writes its code (and may give up), and the other takes the pixel it found.
-        let tables = [&*self.next, &*other.next];
-        let mut lookups = walk_both(tables, [&mut first, &mut second]);
-        while let Some([found, other_found]) = lookups {
+        while let Some([found, other_found]) =
+            walk_both([&*self.next, &*other.next], [&mut first, &mut second])
+        {
             let first_on = first.take_or_extend(found, self);
             let second_on = second.take_or_extend(other_found, other);
             if !(first_on && second_on) {
@@ -210,8 +210,8 @@ impl Lzw {
                     second_on.then(|| other.code(second)).flatten(),
                 ];
             }
-            lookups = walk_both([&*self.next, &*other.next], [&mut first, &mut second]);
         }
+        // One has no pixel left (or both): each finishes alone.
         [self.code(first), other.code(second)]
     }
 
@@ -236,6 +236,7 @@ impl Lzw {
         self.write_rows(1 << min_code_size);
         Stream::new(start, min_code_size, pixels, choices, budget, bits)
     }
+
     /// Where the last finished greedy coding could fork into another choice; a fork is
     /// `None` when the dictionary never grew that far (then both codings are the same).
     pub fn forks(&self) -> Forks {
