@@ -9,7 +9,7 @@ use crate::gif::encoder::queue_frames;
 use crate::physics::contacts::ContactSolver;
 use crate::physics::events::system::EventDriven;
 use crate::physics::motion::CollisionMode;
-use crate::physics::replay::{BYTES_PER_BALL_FRAME, KEPT_BYTES};
+use crate::physics::replay::{frames_that_fit, BYTES_PER_BALL_FRAME};
 use crate::physics::{Ball, Trail};
 use crate::render::Canvas;
 use crate::scene::{BallSpec, Rgb, Scene};
@@ -58,9 +58,8 @@ pub(crate) fn memory_of(scene: &Scene) -> (u64, &'static str) {
 /// The pilot's frames kept for the run (`crate::physics::replay`): their motions, and the
 /// second set of balls they are played back into, whose trails grow over those frames.
 pub fn kept_frames_bytes(scene: &Scene) -> u64 {
-    let balls = scene.balls.len().max(1);
-    let piloted = scene.frames.min(PILOT_FRAMES) as usize;
-    let frames = (KEPT_BYTES / (balls * BYTES_PER_BALL_FRAME)).min(piloted);
+    let balls = scene.balls.len();
+    let frames = frames_that_fit(balls, scene.frames.min(PILOT_FRAMES) as usize);
     let motions = (frames * balls * BYTES_PER_BALL_FRAME) as u64;
     let replayed = scene
         .balls

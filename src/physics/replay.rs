@@ -20,6 +20,13 @@ pub const KEPT_BYTES: usize = 8 << 20;
 /// What is kept per ball and frame, bytes: position and velocity.
 pub const BYTES_PER_BALL_FRAME: usize = std::mem::size_of::<[f64; 4]>();
 
+/// How many of `frames` frames of `balls` balls can be kept: as many whole frames as fit in
+/// [`KEPT_BYTES`]. The memory budget counts this many, and [`KeptFrames`] reserves room for
+/// this many and keeps no more.
+pub fn frames_that_fit(balls: usize, frames: usize) -> usize {
+    (KEPT_BYTES / (balls.max(1) * BYTES_PER_BALL_FRAME)).min(frames)
+}
+
 /// The frames a simulation has been stepped through since it started.
 #[derive(Clone, Debug)]
 pub struct KeptFrames {
@@ -33,13 +40,12 @@ pub struct KeptFrames {
 
 impl KeptFrames {
     /// Starts keeping the frames of `simulation`, which has not been stepped yet, with room
-    /// for `frames` frames (or as many as fit in [`KEPT_BYTES`]) taken at once: grown frame
-    /// by frame, the buffer would double past what the memory budget counts.
+    /// for `frames` frames (or as many as fit, [`frames_that_fit`]) taken at once: grown
+    /// frame by frame, the buffer would double past what the memory budget counts.
     pub fn new(simulation: &Simulation, frames: usize) -> KeptFrames {
         let balls = simulation.balls();
-        let most = KEPT_BYTES / BYTES_PER_BALL_FRAME;
         let mut motions = Vec::new();
-        motions.reserve_exact(frames.saturating_mul(balls.len()).min(most));
+        motions.reserve_exact(frames_that_fit(balls.len(), frames) * balls.len());
         KeptFrames {
             balls: balls.to_vec(),
             motions,
