@@ -4,8 +4,11 @@
 //! balls are in the cache (the numbers are the same as one sweep over every contact); and an
 //! island is what falls asleep and wakes whole (`super::sleep`).
 //!
-//! Within an island the contacts keep the order they were found in, which is all the numbers
-//! depend on: neither the islands' order nor their balls' changes one.
+//! Within an island the contacts that share a ball keep the order they were found in, which
+//! is all the numbers depend on: neither the islands' order nor their balls' changes one, nor
+//! the order of contacts that share none. Before its sub-steps an island's pair contacts are
+//! put into *waves* ([`Islands::into_waves`]) so that the processor can solve side by side
+//! what the order found makes it solve one after another.
 
 use std::ops::Range;
 
@@ -55,6 +58,11 @@ pub(super) struct Islands {
     with_contact: Vec<usize>,
     spare_pairs: Vec<PairContact>,
     spare_fixed: Vec<FixedContact>,
+    /// For [`Islands::into_waves`]: the wave after each ball's last contact so far, each
+    /// contact's wave, and where each wave starts.
+    next_wave: Vec<u32>,
+    wave_of: Vec<u32>,
+    wave_start: Vec<usize>,
 }
 
 impl Islands {
@@ -145,6 +153,51 @@ impl Islands {
         }
     }
 
+    /// Puts `island`'s pair contacts (of the step's `pairs`) into waves, changing no result
+    /// to the bit. A contact's wave is the one after the last wave of an earlier contact that
+    /// shares a ball with it, and the waves follow one another.
+    ///
+    /// Each velocity pass sweeps the contacts in order, and a contact reads the velocities
+    /// its ball's last contact has just written. In the order found a ball's contacts come
+    /// one after another (the grid lists each ball's neighbours together), so each waits for
+    /// the one before. No two contacts of a wave share a ball: the processor solves them
+    /// side by side. Contacts that share a ball keep their order, and contacts that share
+    /// none do not change each other's numbers, so every pass gives the same numbers as in
+    /// the order found (`docs/contacts.md` has the speed-up).
+    pub(crate) fn into_waves(&mut self, pairs: &mut [PairContact], island: &Island) {
+        self.next_wave.resize(self.island_of.len(), 0);
+        for &ball in &self.balls[island.balls.clone()] {
+            self.next_wave[ball] = 0;
+        }
+        let pairs = &mut pairs[island.pairs.clone()];
+        self.wave_of.clear();
+        self.wave_start.clear();
+        for contact in pairs.iter() {
+            let wave = self.next_wave[contact.a].max(self.next_wave[contact.b]);
+            self.next_wave[contact.a] = wave + 1;
+            self.next_wave[contact.b] = wave + 1;
+            self.wave_of.push(wave);
+            // A new wave is only ever the one after the last (counted in `wave_start`).
+            if wave as usize == self.wave_start.len() {
+                self.wave_start.push(0);
+            }
+            self.wave_start[wave as usize] += 1;
+        }
+        // Turn the counts into where each wave starts, then place the contacts (a counting
+        // sort, which keeps the order found within a wave).
+        let mut start = 0;
+        for slot in &mut self.wave_start {
+            (*slot, start) = (start, start + *slot);
+        }
+        self.spare_pairs.clear();
+        self.spare_pairs.extend_from_slice(pairs);
+        for (contact, &wave) in self.spare_pairs.iter().zip(&self.wave_of) {
+            let slot = &mut self.wave_start[wave as usize];
+            pairs[*slot] = *contact;
+            *slot += 1;
+        }
+    }
+
     /// The balls in no island (and awake) this step. They are listed without a branch
     /// (about half the balls of a gas, at random, which a branch would mispredict).
     pub(crate) fn untouched(&mut self) -> &[usize] {
@@ -172,4 +225,100 @@ fn root(parent: &mut [usize], mut ball: usize) -> usize {
 fn claim_next_slot(range: &mut Range<usize>) -> usize {
     range.end += 1;
     range.end - 1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::contacts::contact::ContactState;
+
+    /// A contact between balls `a` and `b` (`a < b`), named by `key`.
+    fn contact(a: usize, b: usize, key: u64) -> PairContact {
+        PairContact {
+            a,
+            b,
+            reach: 2.0,
+            state: ContactState::new(Vec2::new(1.0, 0.0), 0.0, 0.5, 1.0, key),
+            inverse_a: 1.0,
+            inverse_b: 1.0,
+        }
+    }
+
+    /// `found` sorted into islands, then the island holding ball `found[0].a` into waves:
+    /// the keys of the pair contacts in their new order, and the island's range of them.
+    fn waves_of(found: &[PairContact], balls: usize) -> (Vec<u64>, Range<usize>) {
+        let mut contacts = Contacts {
+            pairs: found.to_vec(),
+            ..Contacts::default()
+        };
+        let mut islands = Islands::default();
+        islands.sort(&mut contacts, &[], balls);
+        let island = islands.list[0].clone();
+        islands.into_waves(&mut contacts.pairs, &island);
+        let keys = contacts.pairs.iter().map(|c| c.state.key).collect();
+        (keys, island.pairs)
+    }
+
+    #[test]
+    fn contacts_go_into_waves_in_which_no_two_share_a_ball() {
+        // Wave 0: 0–1, 3–4. Wave 1: 0–2 (after 0–1), 4–5 (after 3–4). Wave 2: 1–2 (after
+        // 0–2). Wave 3: 2–3 (after 1–2), though 3–4 alone would allow wave 1.
+        let found = [
+            contact(0, 1, 1),
+            contact(0, 2, 2),
+            contact(3, 4, 3),
+            contact(1, 2, 4),
+            contact(2, 3, 5),
+            contact(4, 5, 6),
+        ];
+        let (keys, range) = waves_of(&found, 6);
+        assert_eq!(range, 0..6);
+        assert_eq!(keys, [1, 3, 2, 6, 4, 5]);
+    }
+
+    #[test]
+    fn waves_keep_the_order_of_contacts_that_share_a_ball() {
+        // Many seeded islands of random contacts among a few balls: the waves hold every
+        // contact once, and any two that share a ball stay in the order found.
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = |below: u64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed % below
+        };
+        for _ in 0..200 {
+            let balls = 2 + next(10) as usize;
+            // A chain through every ball keeps them in one island; then random pairs.
+            let mut found: Vec<PairContact> = (1..balls).map(|b| contact(b - 1, b, 0)).collect();
+            for _ in 0..next(30) {
+                let (x, y) = (next(balls as u64) as usize, next(balls as u64) as usize);
+                if x != y {
+                    found.push(contact(x.min(y), x.max(y), 0));
+                }
+            }
+            for (k, contact) in found.iter_mut().enumerate() {
+                contact.state.key = k as u64;
+            }
+            let (keys, range) = waves_of(&found, balls);
+            assert_eq!(range, 0..found.len());
+            let mut sorted = keys.clone();
+            sorted.sort_unstable();
+            assert!(sorted.iter().copied().eq(0..found.len() as u64), "{keys:?}");
+            let shares = |x: &PairContact, y: &PairContact| {
+                [x.a, x.b].iter().any(|ball| [y.a, y.b].contains(ball))
+            };
+            for (i, &first) in keys.iter().enumerate() {
+                for &later in &keys[i + 1..] {
+                    let (first, later) = (&found[first as usize], &found[later as usize]);
+                    assert!(
+                        !shares(first, later) || first.state.key < later.state.key,
+                        "contacts {} and {} share a ball but swapped order in {keys:?}",
+                        first.state.key,
+                        later.state.key
+                    );
+                }
+            }
+        }
+    }
 }
