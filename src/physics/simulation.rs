@@ -26,7 +26,8 @@ pub struct Simulation {
     trails: bool,
 }
 
-/// What moves the balls each frame: the lesson's step, or the solver the scene calls for.
+/// What moves the balls each frame: the lesson's step, or the solver the scene calls for
+/// (boxed: each solver's buffers take hundreds of bytes, the lesson's step a few).
 #[derive(Clone, Debug)]
 enum Stepper {
     /// [`Ball::step`] for every ball, which also records its trail.
@@ -36,16 +37,20 @@ enum Stepper {
     IndependentBalls,
     /// Ball-ball collisions in clamp mode: the contact solver moves the balls and solves every
     /// contact (it owns the grid).
-    Contacts(ContactSolver),
+    Contacts(Box<ContactSolver>),
     /// Ball-ball collisions in exact mode: every contact resolved at its moment.
-    Events(EventDriven),
+    Events(Box<EventDriven>),
 }
 
 impl Stepper {
     fn new(effects: &Effects, motion: &Motion, restitution: Option<f64>) -> Stepper {
         match (restitution, motion.collisions) {
-            (Some(e), CollisionMode::Clamp) => return Stepper::Contacts(ContactSolver::new(e)),
-            (Some(e), CollisionMode::Exact) => return Stepper::Events(EventDriven::new(e)),
+            (Some(e), CollisionMode::Clamp) => {
+                return Stepper::Contacts(Box::new(ContactSolver::new(e)))
+            }
+            (Some(e), CollisionMode::Exact) => {
+                return Stepper::Events(Box::new(EventDriven::new(e)))
+            }
             (None, _) => {}
         }
         let gravity = match effects.gravity {

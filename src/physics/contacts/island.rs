@@ -7,7 +7,7 @@
 //! Within an island the contacts that share a ball keep the order they were found in, which
 //! is all the numbers depend on: neither the islands' order nor their balls' changes one, nor
 //! the order of contacts that share none. Before its sub-steps an island's pair contacts are
-//! put into *waves* ([`Islands::into_waves`]) so that the processor can solve side by side
+//! put into *waves* ([`Islands::sort_into_waves`]) so that the processor can solve side by side
 //! what the order found makes it solve one after another.
 
 use std::ops::Range;
@@ -58,7 +58,7 @@ pub(super) struct Islands {
     with_contact: Vec<usize>,
     spare_pairs: Vec<PairContact>,
     spare_fixed: Vec<FixedContact>,
-    /// For [`Islands::into_waves`]: the wave after each ball's last contact so far, each
+    /// For [`Islands::sort_into_waves`]: the wave after each ball's last contact so far, each
     /// contact's wave, and where each wave starts.
     next_wave: Vec<u32>,
     wave_of: Vec<u32>,
@@ -164,7 +164,7 @@ impl Islands {
     /// side by side. Contacts that share a ball keep their order, and contacts that share
     /// none do not change each other's numbers, so every pass gives the same numbers as in
     /// the order found (`docs/contacts.md` has the speed-up).
-    pub(crate) fn into_waves(&mut self, pairs: &mut [PairContact], island: &Island) {
+    pub(crate) fn sort_into_waves(&mut self, pairs: &mut [PairContact], island: &Island) {
         self.next_wave.resize(self.island_of.len(), 0);
         for &ball in &self.balls[island.balls.clone()] {
             self.next_wave[ball] = 0;
@@ -254,13 +254,13 @@ mod tests {
         let mut islands = Islands::default();
         islands.sort(&mut contacts, &[], balls);
         let island = islands.list[0].clone();
-        islands.into_waves(&mut contacts.pairs, &island);
+        islands.sort_into_waves(&mut contacts.pairs, &island);
         let keys = contacts.pairs.iter().map(|c| c.state.key).collect();
         (keys, island.pairs)
     }
 
     #[test]
-    fn contacts_go_into_waves_in_which_no_two_share_a_ball() {
+    fn contacts_go_sort_into_waves_in_which_no_two_share_a_ball() {
         // Wave 0: 0–1, 3–4. Wave 1: 0–2 (after 0–1), 4–5 (after 3–4). Wave 2: 1–2 (after
         // 0–2). Wave 3: 2–3 (after 1–2), though 3–4 alone would allow wave 1.
         let found = [

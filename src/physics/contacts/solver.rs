@@ -168,7 +168,7 @@ fn solve_in_substeps(context: &mut StepContext, island: &Island) {
     let StepContext {
         islands, contacts, ..
     } = context;
-    islands.into_waves(&mut contacts.pairs, island);
+    islands.sort_into_waves(&mut contacts.pairs, island);
     for _ in 0..context.stepping.iterations {
         for stage in SUB_STEP {
             execute(stage, context, island);
