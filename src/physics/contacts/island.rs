@@ -7,8 +7,8 @@
 //! Within an island the contacts that share a ball keep the order they were found in, which
 //! is all the numbers depend on: neither the islands' order nor their balls' changes one, nor
 //! the order of contacts that share none. Before its sub-steps an island's pair contacts are
-//! put into *waves* ([`Islands::sort_into_waves`]) so that the processor can solve side by side
-//! what the order found makes it solve one after another.
+//! put into *waves* ([`Islands::sort_into_waves`]), so that the processor can solve side by
+//! side what the order found makes it solve one after another.
 
 use std::ops::Range;
 
@@ -260,7 +260,7 @@ mod tests {
     }
 
     #[test]
-    fn contacts_go_sort_into_waves_in_which_no_two_share_a_ball() {
+    fn contacts_go_into_waves_in_which_no_two_share_a_ball() {
         // Wave 0: 0–1, 3–4. Wave 1: 0–2 (after 0–1), 4–5 (after 3–4). Wave 2: 1–2 (after
         // 0–2). Wave 3: 2–3 (after 1–2), though 3–4 alone would allow wave 1.
         let found = [
