@@ -1,5 +1,5 @@
 //! Drawing and encoding reuse their buffers: once warmed up, more frames allocate nothing. And
-//! a trail, and exact mode's solver, take the memory the memory budget counts for them.
+//! a trail, and each collision solver, take the memory the memory budget counts for them.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -13,6 +13,7 @@ use bouncing_ball::physics::{Trail, Vec2};
 use bouncing_ball::render::{Canvas, Renderer};
 use bouncing_ball::scene::file as scene_file;
 use bouncing_ball::testing::{kept_frames_bytes, queue_frames};
+use bouncing_ball::Scene;
 
 /// The system allocator, counting every allocation, and the bytes each thread holds.
 struct Counting;
@@ -109,10 +110,9 @@ fn a_full_trail_holds_exactly_the_bytes_the_memory_budget_counts_for_it() {
     }
 }
 
-/// The most heap 20 frames of the scene `text` hold at once on this thread, bytes, and the
-/// memory the budget estimates for the scene.
-fn peak_over_frames(text: &str) -> (i64, i64) {
-    let scene = scene_file::parse("crowd.toml", text, 1).unwrap();
+/// The most heap 20 frames of `scene` hold at once on this thread, bytes, and the memory the
+/// budget estimates for it.
+fn peak_over_frames(scene: &Scene) -> (i64, i64) {
     let before = BYTES_HELD.with(Cell::get);
     PEAK_HELD.with(|peak| peak.set(before));
     let mut simulation = scene.simulation();
@@ -121,7 +121,7 @@ fn peak_over_frames(text: &str) -> (i64, i64) {
     }
     let peak = PEAK_HELD.with(Cell::get) - before;
     drop(simulation);
-    (peak as i64, Estimate::of(&scene).memory as i64)
+    (peak as i64, Estimate::of(scene).memory as i64)
 }
 
 #[test]
@@ -133,10 +133,11 @@ fn exact_mode_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_l
     // same scene without ball collisions.
     let _alone = ALLOCATING.lock().unwrap();
     let crowd = |collisions: &str| {
-        format!(
+        let text = format!(
             "width = 2000\nheight = 2000\ngravity = [0.0, 0.5]\nwalls = {{ damping = 0.9 }}\n\
              {collisions}\n[spawn]\ncount = 20000\nradius = 3.0\nmax_speed = 2.0\ntrail = 0\n"
-        )
+        );
+        scene_file::parse("crowd.toml", &text, 1).unwrap()
     };
     let exact = "ball_collisions = { restitution = 0.9 }\ncollisions = \"exact\"";
     let (held_with, counted_with) = peak_over_frames(&crowd(exact));
@@ -145,6 +146,34 @@ fn exact_mode_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_l
     assert!(
         held <= counted && counted <= held + held / 4,
         "exact mode holds {} bytes a ball at most; the budget counts {}",
+        held / 20_000,
+        counted / 20_000
+    );
+}
+
+#[test]
+fn the_contact_solver_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_less() {
+    // As for exact mode above, in the contact solver's worst case: 20,000 balls on one spot,
+    // where every ball has its most contacts (`MAX_PAIRS_PER_BALL`).
+    let _alone = ALLOCATING.lock().unwrap();
+    let heap = |collisions: &str| {
+        let text = format!(
+            "width = 1280\nheight = 720\ngravity = [0.0, 0.5]\nwalls = {{ damping = 0.5 }}\n\
+             {collisions}\n[spawn]\ncount = 20000\nradius = 4.0\nmax_speed = 0.0\ntrail = 0\n"
+        );
+        let mut scene = scene_file::parse("heap.toml", &text, 1).unwrap();
+        for ball in &mut scene.balls {
+            (ball.x, ball.y) = (640.0, 360.0);
+        }
+        scene
+    };
+    let (held_with, counted_with) =
+        peak_over_frames(&heap("ball_collisions = { restitution = 0.5 }"));
+    let (held_without, counted_without) = peak_over_frames(&heap(""));
+    let (held, counted) = (held_with - held_without, counted_with - counted_without);
+    assert!(
+        held <= counted && counted <= held + held / 4,
+        "the contact solver holds {} bytes a ball at most; the budget counts {}",
         held / 20_000,
         counted / 20_000
     );
