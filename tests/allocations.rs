@@ -124,13 +124,26 @@ fn peak_over_frames(scene: &Scene) -> (i64, i64) {
     (peak as i64, Estimate::of(scene).memory as i64)
 }
 
+/// Asserts that the memory budget counts all of what `solver` holds per ball, and at most a
+/// quarter more: its share of the estimate, and of the heap 20 frames hold, is scene `with`
+/// it less the same scene `without` ball collisions (20,000 balls).
+fn assert_solver_counted(solver: &str, with: &Scene, without: &Scene) {
+    let (held_with, counted_with) = peak_over_frames(with);
+    let (held_without, counted_without) = peak_over_frames(without);
+    let (held, counted) = (held_with - held_without, counted_with - counted_without);
+    assert!(
+        held <= counted && counted <= held + held / 4,
+        "{solver} holds {} bytes a ball at most; the budget counts {}",
+        held / 20_000,
+        counted / 20_000
+    );
+}
+
 #[test]
 fn exact_mode_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_less() {
     // The budget refuses a scene before any work from its estimate, which counts exact mode's
     // buffers per ball: all of them, or a run could pass its limit, and not far more, or runs
-    // that fit would be refused. 20,000 balls spread over 2000 px: the solver's share of the
-    // estimate, and of the heap the run holds, is the scene with exact collisions less the
-    // same scene without ball collisions.
+    // that fit would be refused. 20,000 balls spread over 2000 px.
     let _alone = ALLOCATING.lock().unwrap();
     let crowd = |collisions: &str| {
         let text = format!(
@@ -140,15 +153,7 @@ fn exact_mode_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_l
         scene_file::parse("crowd.toml", &text, 1).unwrap()
     };
     let exact = "ball_collisions = { restitution = 0.9 }\ncollisions = \"exact\"";
-    let (held_with, counted_with) = peak_over_frames(&crowd(exact));
-    let (held_without, counted_without) = peak_over_frames(&crowd(""));
-    let (held, counted) = (held_with - held_without, counted_with - counted_without);
-    assert!(
-        held <= counted && counted <= held + held / 4,
-        "exact mode holds {} bytes a ball at most; the budget counts {}",
-        held / 20_000,
-        counted / 20_000
-    );
+    assert_solver_counted("exact mode", &crowd(exact), &crowd(""));
 }
 
 #[test]
@@ -167,16 +172,8 @@ fn the_contact_solver_holds_what_the_memory_budget_counts_for_it_and_at_most_a_q
         }
         scene
     };
-    let (held_with, counted_with) =
-        peak_over_frames(&heap("ball_collisions = { restitution = 0.5 }"));
-    let (held_without, counted_without) = peak_over_frames(&heap(""));
-    let (held, counted) = (held_with - held_without, counted_with - counted_without);
-    assert!(
-        held <= counted && counted <= held + held / 4,
-        "the contact solver holds {} bytes a ball at most; the budget counts {}",
-        held / 20_000,
-        counted / 20_000
-    );
+    let with = heap("ball_collisions = { restitution = 0.5 }");
+    assert_solver_counted("the contact solver", &with, &heap(""));
 }
 
 /// The most heap the frames of `scene` take on this thread when its first `kept` frames are
