@@ -4,7 +4,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 use bouncing_ball::budget::Estimate;
 use bouncing_ball::gif::GifWriter;
@@ -63,9 +63,15 @@ fn allocations() -> usize {
 /// thread's allocations.
 static ALLOCATING: Mutex<()> = Mutex::new(());
 
+/// Takes [`ALLOCATING`], also after a test that held it failed (that test's failure is the
+/// one to read, not a poisoned lock in the next).
+fn alone() -> MutexGuard<'static, ()> {
+    ALLOCATING.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
 #[test]
 fn drawing_and_encoding_frames_allocate_nothing_once_warmed_up() {
-    let _alone = ALLOCATING.lock().unwrap();
+    let _alone = alone();
     let scene = scene_file::preset("elastic", 1).unwrap();
     let renderer = Renderer::new(&scene).unwrap();
     let mut simulation = scene.simulation();
@@ -144,7 +150,7 @@ fn exact_mode_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_l
     // The budget refuses a scene before any work from its estimate, which counts exact mode's
     // buffers per ball: all of them, or a run could pass its limit, and not far more, or runs
     // that fit would be refused. 20,000 balls spread over 2000 px.
-    let _alone = ALLOCATING.lock().unwrap();
+    let _alone = alone();
     let crowd = |collisions: &str| {
         let text = format!(
             "width = 2000\nheight = 2000\ngravity = [0.0, 0.5]\nwalls = {{ damping = 0.9 }}\n\
@@ -160,7 +166,7 @@ fn exact_mode_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_l
 fn the_contact_solver_holds_what_the_memory_budget_counts_for_it_and_at_most_a_quarter_less() {
     // As for exact mode above, in the contact solver's worst case: 20,000 balls on one spot,
     // where every ball has its most contacts (`MAX_PAIRS_PER_BALL`).
-    let _alone = ALLOCATING.lock().unwrap();
+    let _alone = alone();
     let heap = |collisions: &str| {
         let text = format!(
             "width = 1280\nheight = 720\ngravity = [0.0, 0.5]\nwalls = {{ damping = 0.5 }}\n\
@@ -205,7 +211,7 @@ fn kept_frames_held(scene: &bouncing_ball::scene::Scene, kept: usize) -> i64 {
 fn the_pilots_kept_frames_hold_what_the_memory_budget_counts_for_them_and_at_most_a_quarter_less() {
     // The pile's 300 frames of 150 balls with trails of 4: their motions, and the balls they
     // are played back into, trails filled.
-    let _alone = ALLOCATING.lock().unwrap();
+    let _alone = alone();
     let scene = scene_file::preset("pile", 1).unwrap();
     let held = kept_frames_held(&scene, scene.frames as usize);
     let counted = kept_frames_bytes(&scene) as i64;
