@@ -106,9 +106,9 @@ fn main() -> std::io::Result<()> {
     let write = encoder.write + t.elapsed();
     let total = started.elapsed();
 
-    let threads = rayon::current_num_threads();
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
     println!(
-        "{WIDTH}x{HEIGHT}, {BALLS} balls, {FRAMES} frames, trail {TRAIL}, {}; {threads} threads",
+        "{WIDTH}x{HEIGHT}, {BALLS} balls, {FRAMES} frames, trail {TRAIL}, {}; {cores} cores",
         if collisions {
             "elastic ball-ball collisions (billiards)"
         } else {
@@ -129,7 +129,7 @@ fn main() -> std::io::Result<()> {
         ("physics (Simulation::step)", physics),
         ("raster (Renderer::draw)", raster),
         ("changed rectangle + copy", encoder.changes),
-        ("LZW (all threads at once)", encoder.lzw),
+        ("LZW (not hidden by threads)", encoder.lzw),
         ("write (to the file)", write),
         ("everything else", rest),
     ] {

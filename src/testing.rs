@@ -5,6 +5,7 @@
 
 pub use crate::budget::memory::kept_frames_bytes;
 pub use crate::check::animation::lzw_indices;
+pub use crate::gif::coders::THREADS_VARIABLE;
 pub use crate::gif::encoder::{queue_frames, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
 pub use crate::gif::interlace::interlace;
 pub use crate::gif::transparency::{

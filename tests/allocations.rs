@@ -89,7 +89,7 @@ fn drawing_and_encoding_frames_allocate_nothing_once_warmed_up() {
             during += allocations() - before;
         }
     }
-    // Buffers reach their largest size early; the rare allocation after that is rayon's.
+    // Buffers reach their largest size early.
     assert!(
         during < 30,
         "{during} allocations over {counted} frames: something allocates per frame or per queue"

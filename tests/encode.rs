@@ -17,7 +17,7 @@ use bouncing_ball::testing::interlace;
 use bouncing_ball::testing::{
     mark_mixed_stretches, mark_unchanged, mixed_neighbours, transparent_index,
 };
-use bouncing_ball::testing::{queue_frames, MAX_QUEUED_FRAMES, QUEUE_PIXELS};
+use bouncing_ball::testing::{queue_frames, MAX_QUEUED_FRAMES, QUEUE_PIXELS, THREADS_VARIABLE};
 use bouncing_ball::{run, BallSpec, Job, OutputKind, Scene};
 use common::{decode_gif, lesson_scene, render_frames};
 use image::Luma;
@@ -702,7 +702,7 @@ fn the_gif_is_the_same_bytes_on_one_thread_and_on_four() {
             .arg(&gif)
             .arg("--png")
             .arg(dir.path().join(format!("{threads}.png")))
-            .env("RAYON_NUM_THREADS", threads)
+            .env(THREADS_VARIABLE, threads)
             .status()
             .unwrap();
         assert!(status.success());

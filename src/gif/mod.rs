@@ -5,9 +5,11 @@
 //! - `interlace`: GIF's interlaced row order, another order for LZW to read.
 //! - [`lzw`]: GIF's LZW compression, one coder per thread.
 //! - `cheapest`: each frame's smallest encoding among a few candidates.
-//! - `encoder`: frames queued in a bounded batch, compressed in parallel, written in order.
+//! - `coders`: frames compressed on every core, the caller's included.
+//! - `encoder`: frames cut to what changed, handed to the coders, written in order.
 
 pub(crate) mod cheapest;
+pub(crate) mod coders;
 pub mod delta;
 pub(crate) mod encoder;
 pub(crate) mod interlace;

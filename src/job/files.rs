@@ -102,14 +102,11 @@ impl Files {
     /// file is in place yet.
     pub(crate) fn finish_pictures(
         &self,
-        mut gif: Gif,
+        gif: Gif,
         still: &IndexedFrame,
         palette: &Palette,
     ) -> Result<(), OutputError> {
         let gif_error = OutputError::at(&gif.path);
-        if let Some(writer) = gif.writer.as_mut() {
-            writer.send_queued().map_err(&gif_error)?;
-        }
         if let Some(mut png) = self.writer(OutputKind::Png)? {
             write_png(&mut png, still, palette)
                 .and_then(|()| png.flush())

@@ -1,0 +1,241 @@
+//! Frames coded on every core: a queue of frames waiting for a coder, a coder thread for each
+//! core but the caller's, and the caller coding the oldest waiting frame itself whenever more
+//! frames wait than the threads need. So one core needs no thread at all, and no core waits
+//! while another has frames to code. Frames come back in the order they were coded, each
+//! with its number, for the writer to put in order.
+//!
+//! A frame's coding depends on its pixels alone (`super::cheapest`), so the GIF is the same
+//! whichever coder took which frame, on any number of cores.
+
+use std::collections::VecDeque;
+use std::num::NonZeroUsize;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::mpsc::{sync_channel, Receiver, SyncSender, TryRecvError};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard};
+use std::{io, thread};
+
+use super::cheapest::{Coder, Encoding};
+use super::delta::Rect;
+
+/// The environment variable that sets how many cores code frames, the caller's included
+/// (default: every core). The GIF's bytes do not depend on it.
+pub const THREADS_VARIABLE: &str = "BOUNCING_BALL_THREADS";
+
+/// How many frames wait for each coder thread before the caller codes one itself: enough
+/// that a thread finds the next frame waiting while the caller codes.
+const WAITING_PER_THREAD: usize = 2;
+
+/// One frame on its way through the coders: what to write where, what lies beneath it, and
+/// its compressed bytes once coded. Its buffers are kept from frame to frame.
+#[derive(Default)]
+pub(crate) struct Frame {
+    pub rect: Rect,
+    pub pixels: Vec<u8>,
+    /// What the viewer shows under `rect` before this frame; empty for the first frame.
+    pub beneath: Vec<u8>,
+    pub lzw: Vec<u8>,
+    /// How `lzw` was encoded: what the frame's header must say.
+    pub encoding: Encoding,
+}
+
+impl Frame {
+    /// A frame whose buffers already hold `pixels` pixels, so that no frame allocates.
+    /// (Memory is only reserved; the system hands it over when it is first written.)
+    pub fn reserved(pixels: usize) -> Frame {
+        Frame {
+            pixels: Vec::with_capacity(pixels),
+            beneath: Vec::with_capacity(pixels),
+            lzw: Vec::with_capacity(pixels),
+            ..Frame::default()
+        }
+    }
+
+    /// Compresses the frame in its cheapest encoding, with `coder`'s tools.
+    fn code(&mut self, coder: &mut Coder, table_len: usize) {
+        let beneath = (!self.beneath.is_empty()).then_some(&self.beneath[..]);
+        let width = self.rect.width as usize;
+        self.encoding =
+            coder.encode_cheapest(&self.pixels, width, beneath, table_len, &mut self.lzw);
+    }
+}
+
+/// A frame with its number (counted from 0 as frames are queued), so that frames coded out
+/// of order find their place.
+pub(crate) type Numbered = (usize, Frame);
+
+/// The coders of one GIF: the queue, the threads, and the caller's own coder.
+pub(crate) struct Coders {
+    waiting: Shared,
+    /// The threads' coded frames; `None` from a thread that panicked (a bug), so that the
+    /// caller does not wait for a frame that will never come.
+    from_threads: Receiver<Option<Numbered>>,
+    threads: usize,
+    /// The caller's coder, for the frames it codes itself.
+    coder: Coder,
+    /// How many entries the colour table has, a power of two: the indices free to mean
+    /// transparent lie below it.
+    table_len: usize,
+}
+
+impl Coders {
+    /// Starts a coder thread for each core but the caller's, at most `frames - 1`, for at
+    /// most `frames` frames at a time.
+    pub fn start(table_len: usize, frames: usize) -> io::Result<Coders> {
+        let waiting = Arc::new(Waiting::default());
+        // Room for every frame at once, so a thread never waits to hand one back, and the
+        // channel's memory is made here once.
+        let (to_caller, from_threads) = sync_channel(frames);
+        let threads = cores().min(frames).max(1) - 1;
+        for n in 1..=threads {
+            let (waiting, to_caller) = (Arc::clone(&waiting), to_caller.clone());
+            thread::Builder::new()
+                .name(format!("gif coder {n}"))
+                .spawn(move || code_frames(&waiting, &to_caller, table_len))?;
+        }
+        Ok(Coders {
+            waiting: Shared(waiting),
+            from_threads,
+            threads,
+            coder: Coder::default(),
+            table_len,
+        })
+    }
+
+    /// Queues `frame` for the next free coder.
+    pub fn queue(&self, frame: Numbered) {
+        self.waiting.0.push(frame);
+    }
+
+    /// The oldest waiting frame coded here, when more frames wait than the threads need;
+    /// `None` when they do not.
+    pub fn help(&mut self) -> Option<Numbered> {
+        if self.waiting.0.len() <= WAITING_PER_THREAD * self.threads {
+            return None;
+        }
+        let oldest = self.waiting.0.take()?;
+        Some(self.code_here(oldest))
+    }
+
+    /// A frame the threads have coded, if one is ready now.
+    pub fn coded_now(&mut self) -> io::Result<Option<Numbered>> {
+        if self.threads == 0 {
+            return Ok(None);
+        }
+        match self.from_threads.try_recv() {
+            Ok(Some(frame)) => Ok(Some(frame)),
+            Ok(None) | Err(TryRecvError::Disconnected) => Err(coder_gone()),
+            Err(TryRecvError::Empty) => Ok(None),
+        }
+    }
+
+    /// The next coded frame: the oldest waiting frame coded here, or, when the threads have
+    /// taken them all, the next they finish.
+    pub fn next_coded(&mut self) -> io::Result<Numbered> {
+        if let Some(oldest) = self.waiting.0.take() {
+            return Ok(self.code_here(oldest));
+        }
+        match self.from_threads.recv() {
+            Ok(Some(frame)) => Ok(frame),
+            Ok(None) | Err(_) => Err(coder_gone()),
+        }
+    }
+
+    fn code_here(&mut self, (number, mut frame): Numbered) -> Numbered {
+        frame.code(&mut self.coder, self.table_len);
+        (number, frame)
+    }
+}
+
+/// A coder thread stopped (it panicked): nothing more can be written.
+fn coder_gone() -> io::Error {
+    io::Error::other("a GIF coding thread stopped")
+}
+
+/// How many cores code frames: [`THREADS_VARIABLE`] if set to a whole number above zero,
+/// else every core.
+fn cores() -> usize {
+    let set = std::env::var(THREADS_VARIABLE).ok();
+    match set.and_then(|n| n.trim().parse::<NonZeroUsize>().ok()) {
+        Some(cores) => cores.get(),
+        None => thread::available_parallelism().map_or(1, NonZeroUsize::get),
+    }
+}
+
+/// A coder thread's loop: the oldest frame not yet taken, coded and sent back, until the
+/// writer is gone.
+fn code_frames(waiting: &Waiting, to_caller: &SyncSender<Option<Numbered>>, table_len: usize) {
+    let mut coder = Coder::default();
+    while let Some((number, mut frame)) = waiting.wait_for_frame() {
+        let done = catch_unwind(AssertUnwindSafe(|| frame.code(&mut coder, table_len)));
+        let message = done.ok().map(|()| (number, frame));
+        let panicked = message.is_none();
+        if to_caller.send(message).is_err() || panicked {
+            return;
+        }
+    }
+}
+
+/// The frames waiting for a coder, oldest first, shared by the caller and the threads.
+#[derive(Default)]
+struct Waiting {
+    frames: Mutex<WaitingFrames>,
+    /// Signalled when a frame comes or the writer goes.
+    changed: Condvar,
+}
+
+#[derive(Default)]
+struct WaitingFrames {
+    queue: VecDeque<Numbered>,
+    /// The writer is gone: the threads stop.
+    closed: bool,
+}
+
+/// The caller's hold on the waiting frames: when the caller drops it, the threads stop.
+struct Shared(Arc<Waiting>);
+
+impl Drop for Shared {
+    fn drop(&mut self) {
+        self.0.lock().closed = true;
+        self.0.changed.notify_all();
+    }
+}
+
+impl Waiting {
+    fn lock(&self) -> MutexGuard<'_, WaitingFrames> {
+        // The lock is held only to push or take a frame, which cannot panic.
+        self.frames
+            .lock()
+            .expect("no thread panics holding the queue")
+    }
+
+    fn push(&self, frame: Numbered) {
+        self.lock().queue.push_back(frame);
+        self.changed.notify_one();
+    }
+
+    fn len(&self) -> usize {
+        self.lock().queue.len()
+    }
+
+    /// The oldest waiting frame, if any, without waiting for one.
+    fn take(&self) -> Option<Numbered> {
+        self.lock().queue.pop_front()
+    }
+
+    /// The oldest waiting frame, waiting for one to come; `None` once the caller is gone.
+    fn wait_for_frame(&self) -> Option<Numbered> {
+        let mut frames = self.lock();
+        loop {
+            if frames.closed {
+                return None;
+            }
+            if let Some(frame) = frames.queue.pop_front() {
+                return Some(frame);
+            }
+            frames = self
+                .changed
+                .wait(frames)
+                .expect("no thread panics holding the queue");
+        }
+    }
+}
