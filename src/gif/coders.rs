@@ -26,7 +26,8 @@ pub const THREADS_VARIABLE: &str = "BOUNCING_BALL_THREADS";
 const WAITING_PER_THREAD: usize = 2;
 
 /// One frame on its way through the coders: what to write where, what lies beneath it, and
-/// its compressed bytes once coded. Its buffers are kept from frame to frame.
+/// its compressed bytes once coded. Its buffers are kept from frame to frame, so they grow
+/// to the largest rectangle and then allocate no more.
 #[derive(Default)]
 pub(crate) struct Frame {
     pub rect: Rect,
@@ -39,17 +40,6 @@ pub(crate) struct Frame {
 }
 
 impl Frame {
-    /// A frame whose buffers already hold `pixels` pixels, so that no frame allocates.
-    /// (Memory is only reserved; the system hands it over when it is first written.)
-    pub fn reserved(pixels: usize) -> Frame {
-        Frame {
-            pixels: Vec::with_capacity(pixels),
-            beneath: Vec::with_capacity(pixels),
-            lzw: Vec::with_capacity(pixels),
-            ..Frame::default()
-        }
-    }
-
     /// Compresses the frame in its cheapest encoding, with `coder`'s tools.
     fn code(&mut self, coder: &mut Coder, table_len: usize) {
         let beneath = (!self.beneath.is_empty()).then_some(&self.beneath[..]);
@@ -81,16 +71,24 @@ impl Coders {
     /// Starts a coder thread for each core but the caller's, at most `frames - 1`, for at
     /// most `frames` frames at a time.
     pub fn start(table_len: usize, frames: usize) -> io::Result<Coders> {
+        Coders::with_threads(table_len, frames, cores().min(frames).max(1) - 1)
+    }
+
+    fn with_threads(table_len: usize, frames: usize, threads: usize) -> io::Result<Coders> {
         let waiting = Arc::new(Waiting::default());
         // Room for every frame at once, so a thread never waits to hand one back, and the
         // channel's memory is made here once.
         let (to_caller, from_threads) = sync_channel(frames);
-        let threads = cores().min(frames).max(1) - 1;
         for n in 1..=threads {
             let (waiting, to_caller) = (Arc::clone(&waiting), to_caller.clone());
             thread::Builder::new()
                 .name(format!("gif coder {n}"))
-                .spawn(move || code_frames(&waiting, &to_caller, table_len))?;
+                .spawn(move || {
+                    let mut coder = Coder::default();
+                    code_frames(&waiting, &to_caller, |frame| {
+                        frame.code(&mut coder, table_len)
+                    });
+                })?;
         }
         Ok(Coders {
             waiting: Shared(waiting),
@@ -161,15 +159,19 @@ fn cores() -> usize {
     }
 }
 
-/// A coder thread's loop: the oldest frame not yet taken, coded and sent back, until the
-/// writer is gone.
-fn code_frames(waiting: &Waiting, to_caller: &SyncSender<Option<Numbered>>, table_len: usize) {
-    let mut coder = Coder::default();
+/// A coder thread's loop: the oldest frame not yet taken, coded by `code` and sent back,
+/// until the writer is gone or a coding panicked (a bug: the thread says so with `None` and
+/// stops).
+fn code_frames(
+    waiting: &Waiting,
+    to_caller: &SyncSender<Option<Numbered>>,
+    mut code: impl FnMut(&mut Frame),
+) {
     while let Some((number, mut frame)) = waiting.wait_for_frame() {
-        let done = catch_unwind(AssertUnwindSafe(|| frame.code(&mut coder, table_len)));
-        let message = done.ok().map(|()| (number, frame));
-        let panicked = message.is_none();
-        if to_caller.send(message).is_err() || panicked {
+        let coded = catch_unwind(AssertUnwindSafe(|| code(&mut frame)));
+        let message = coded.ok().map(|()| (number, frame));
+        let sent = message.is_some();
+        if to_caller.send(message).is_err() || !sent {
             return;
         }
     }
@@ -237,5 +239,81 @@ impl Waiting {
                 .wait(frames)
                 .expect("no thread panics holding the queue");
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::time::{Duration, Instant};
+
+    use super::*;
+
+    /// Waits up to a minute for `done`, checking every millisecond.
+    fn eventually(done: impl Fn() -> bool) -> bool {
+        let started = Instant::now();
+        while !done() {
+            if started.elapsed() > Duration::from_secs(60) {
+                return false;
+            }
+            thread::sleep(Duration::from_millis(1));
+        }
+        true
+    }
+
+    #[test]
+    fn the_coder_threads_stop_when_their_writer_goes() {
+        let coders = Coders::with_threads(16, 8, 3).unwrap();
+        let waiting = Arc::clone(&coders.waiting.0);
+        assert_eq!(
+            Arc::strong_count(&waiting),
+            5,
+            "the caller, three threads and this test"
+        );
+        drop(coders);
+        assert!(
+            eventually(|| Arc::strong_count(&waiting) == 1),
+            "{} holders of the queue left a minute after the writer went",
+            Arc::strong_count(&waiting)
+        );
+    }
+
+    #[test]
+    fn a_coder_thread_codes_frame_after_frame_while_the_caller_only_queues() {
+        let coders = Coders::with_threads(16, 8, 1).unwrap();
+        for number in 0..6 {
+            coders.queue((number, Frame::default()));
+        }
+        assert!(
+            eventually(|| coders.waiting.0.len() == 0),
+            "{} of 6 frames still wait for the thread",
+            coders.waiting.0.len()
+        );
+    }
+
+    #[test]
+    fn a_coder_thread_that_panics_is_an_error_for_the_writer_not_a_hang() {
+        let waiting = Arc::new(Waiting::default());
+        let (to_caller, from_threads) = sync_channel(8);
+        let thread_waiting = Arc::clone(&waiting);
+        thread::spawn(move || {
+            code_frames(&thread_waiting, &to_caller, |_| {
+                panic!("a coder's bug, on purpose")
+            })
+        });
+        let mut coders = Coders {
+            waiting: Shared(waiting),
+            from_threads,
+            threads: 1,
+            coder: Coder::default(),
+            table_len: 16,
+        };
+        coders.queue((0, Frame::default()));
+        // Once the thread has taken the frame, the writer can only wait for the thread.
+        assert!(
+            eventually(|| coders.waiting.0.len() == 0),
+            "the thread took the frame"
+        );
+        let error = coders.next_coded().err().expect("an error, not a frame");
+        assert_eq!(error.to_string(), "a GIF coding thread stopped");
     }
 }

@@ -52,10 +52,8 @@ pub struct GifWriter<W: Write> {
     pictures: u32,
     /// Slots free to take the next frame, their buffers kept from earlier frames.
     free: Vec<Frame>,
-    /// How many more slots may be made (each when first needed), and how many pixels each
-    /// holds.
+    /// How many more slots may be made, each when first needed.
     slots_left: usize,
-    frame_pixels: usize,
     /// The frames queued and not yet written, oldest first. The newest is held back until
     /// the next frame comes, since identical frames may still lengthen its time.
     unwritten: VecDeque<Unwritten>,
@@ -112,7 +110,6 @@ impl<W: Write> GifWriter<W> {
             .map_err(gif_error)?;
         let delay_cs = u16::try_from(frame_ms / 10).map_err(io::Error::other)?;
         let slots = queue_frames(width.into(), height.into());
-        let pixels = usize::from(width) * usize::from(height);
         let table_len = palette.colours().len().next_power_of_two().max(2);
         // Never more coders than slots.
         let coders = Coders::start(table_len, slots)?;
@@ -125,7 +122,6 @@ impl<W: Write> GifWriter<W> {
             pictures: 0,
             free: Vec::with_capacity(slots),
             slots_left: slots,
-            frame_pixels: pixels,
             unwritten: VecDeque::with_capacity(slots),
             coders,
             timings: EncodeTimings::default(),
@@ -234,7 +230,7 @@ impl<W: Write> GifWriter<W> {
             }
             if self.slots_left > 0 {
                 self.slots_left -= 1;
-                return Ok(Frame::reserved(self.frame_pixels));
+                return Ok(Frame::default());
             }
             self.next_coded()?;
             self.write_coded(1)?;
