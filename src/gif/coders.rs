@@ -26,8 +26,7 @@ pub const THREADS_VARIABLE: &str = "BOUNCING_BALL_THREADS";
 const WAITING_PER_THREAD: usize = 2;
 
 /// One frame on its way through the coders: what to write where, what lies beneath it, and
-/// its compressed bytes once coded. Its buffers are kept from frame to frame, so they grow
-/// to the largest rectangle and then allocate no more.
+/// its compressed bytes once coded. Its buffers are kept from frame to frame.
 #[derive(Default)]
 pub(crate) struct Frame {
     pub rect: Rect,
@@ -40,6 +39,18 @@ pub(crate) struct Frame {
 }
 
 impl Frame {
+    /// A frame whose buffers already hold `pixels` pixels, so that it never allocates: a slot
+    /// may first be used late in a run, when the coders fall behind. (Memory is only
+    /// reserved; the system hands it over when it is first written.)
+    pub fn reserved(pixels: usize) -> Frame {
+        Frame {
+            pixels: Vec::with_capacity(pixels),
+            beneath: Vec::with_capacity(pixels),
+            lzw: Vec::with_capacity(pixels),
+            ..Frame::default()
+        }
+    }
+
     /// Compresses the frame in its cheapest encoding, with `coder`'s tools.
     fn code(&mut self, coder: &mut Coder, table_len: usize) {
         let beneath = (!self.beneath.is_empty()).then_some(&self.beneath[..]);
@@ -75,7 +86,7 @@ impl Coders {
     }
 
     fn with_threads(table_len: usize, frames: usize, threads: usize) -> io::Result<Coders> {
-        let waiting = Arc::new(Waiting::default());
+        let waiting = Arc::new(Waiting::for_frames(frames));
         // Room for every frame at once, so a thread never waits to hand one back, and the
         // channel's memory is made here once.
         let (to_caller, from_threads) = sync_channel(frames);
@@ -178,14 +189,12 @@ fn code_frames(
 }
 
 /// The frames waiting for a coder, oldest first, shared by the caller and the threads.
-#[derive(Default)]
 struct Waiting {
     frames: Mutex<WaitingFrames>,
     /// Signalled when a frame comes or the writer goes.
     changed: Condvar,
 }
 
-#[derive(Default)]
 struct WaitingFrames {
     queue: VecDeque<Numbered>,
     /// The writer is gone: the threads stop.
@@ -203,6 +212,18 @@ impl Drop for Shared {
 }
 
 impl Waiting {
+    /// A queue with room for `frames` frames, made once.
+    fn for_frames(frames: usize) -> Waiting {
+        let frames = WaitingFrames {
+            queue: VecDeque::with_capacity(frames),
+            closed: false,
+        };
+        Waiting {
+            frames: Mutex::new(frames),
+            changed: Condvar::new(),
+        }
+    }
+
     fn lock(&self) -> MutexGuard<'_, WaitingFrames> {
         // The lock is held only to push or take a frame, which cannot panic.
         self.frames
@@ -292,7 +313,7 @@ mod tests {
 
     #[test]
     fn a_coder_thread_that_panics_is_an_error_for_the_writer_not_a_hang() {
-        let waiting = Arc::new(Waiting::default());
+        let waiting = Arc::new(Waiting::for_frames(8));
         let (to_caller, from_threads) = sync_channel(8);
         let thread_waiting = Arc::clone(&waiting);
         thread::spawn(move || {

@@ -29,8 +29,7 @@ use crate::render::{Damage, IndexedFrame};
 /// of the compressed data.
 pub const QUEUE_PIXELS: usize = 4 << 20;
 /// The most frame slots: enough that the caller seldom waits for a slot while a coder works
-/// on a frame that must be written before the ones already coded. Slots are made as they
-/// are first needed.
+/// on a frame that must be written before the ones already coded.
 pub const MAX_QUEUED_FRAMES: usize = 32;
 /// How many frame slots a GIF of `width` × `height` px has: at least one, at most
 /// [`MAX_QUEUED_FRAMES`], and no more than [`QUEUE_PIXELS`] unless one frame alone is.
@@ -52,8 +51,6 @@ pub struct GifWriter<W: Write> {
     pictures: u32,
     /// Slots free to take the next frame, their buffers kept from earlier frames.
     free: Vec<Frame>,
-    /// How many more slots may be made, each when first needed.
-    slots_left: usize,
     /// The frames queued and not yet written, oldest first. The newest is held back until
     /// the next frame comes, since identical frames may still lengthen its time.
     unwritten: VecDeque<Unwritten>,
@@ -110,6 +107,7 @@ impl<W: Write> GifWriter<W> {
             .map_err(gif_error)?;
         let delay_cs = u16::try_from(frame_ms / 10).map_err(io::Error::other)?;
         let slots = queue_frames(width.into(), height.into());
+        let pixels = usize::from(width) * usize::from(height);
         let table_len = palette.colours().len().next_power_of_two().max(2);
         // Never more coders than slots.
         let coders = Coders::start(table_len, slots)?;
@@ -120,8 +118,7 @@ impl<W: Write> GifWriter<W> {
             delay_cs,
             shown: None,
             pictures: 0,
-            free: Vec::with_capacity(slots),
-            slots_left: slots,
+            free: (0..slots).map(|_| Frame::reserved(pixels)).collect(),
             unwritten: VecDeque::with_capacity(slots),
             coders,
             timings: EncodeTimings::default(),
@@ -221,16 +218,12 @@ impl<W: Write> GifWriter<W> {
         }
     }
 
-    /// A free slot for the next frame: one freed by a written frame, or a new one while there
-    /// may be more; else the next coded frame is awaited (or coded here) and written.
+    /// A free slot for the next frame; while none is free, the next coded frame is awaited
+    /// (or coded here) and written.
     fn free_slot(&mut self) -> io::Result<Frame> {
         loop {
             if let Some(slot) = self.free.pop() {
                 return Ok(slot);
-            }
-            if self.slots_left > 0 {
-                self.slots_left -= 1;
-                return Ok(Frame::default());
             }
             self.next_coded()?;
             self.write_coded(1)?;
@@ -305,5 +298,22 @@ impl<W: Write> GifWriter<W> {
     pub fn finish(mut self) -> io::Result<W> {
         self.flush()?;
         self.encoder.into_inner().map_err(gif_error)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_frame_slot_holds_a_whole_frame_from_the_start_so_a_late_first_use_allocates_nothing() {
+        let mut palette = Palette::new();
+        palette.insert([0, 0, 0]);
+        let gif = GifWriter::new(Vec::new(), 64, 48, &palette, 30).unwrap();
+        assert_eq!(gif.free.len(), queue_frames(64, 48));
+        for slot in &gif.free {
+            let held = [&slot.pixels, &slot.beneath, &slot.lzw].map(|buffer| buffer.capacity());
+            assert!(held.iter().all(|&bytes| bytes >= 64 * 48), "{held:?} bytes");
+        }
     }
 }
