@@ -276,6 +276,23 @@ fn a_still_scene_longer_than_a_gif_delay_can_hold_keeps_its_time() {
 }
 
 #[test]
+fn frames_shown_for_no_time_are_each_kept_since_a_viewer_times_them_itself() {
+    // Delay 0 has no time to add up: a viewer shows each such frame for a time of its own
+    // choosing, so merging the still frames would shorten the animation. Each stays a frame
+    // (a one-pixel one, since nothing changed).
+    let scene = Scene {
+        frame_ms: 0,
+        ..still_balls_and(None, 12)
+    };
+    let (_, bytes) = run_through_canvas(&scene);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("still.gif");
+    std::fs::write(&path, &bytes).unwrap();
+    let delays = decode_gif(&path).delays_cs;
+    assert_eq!(delays, vec![0; 12], "one frame of delay 0 per frame drawn");
+}
+
+#[test]
 fn the_pixels_drawn_tally_counts_exactly_the_pixels_a_circle_fills() {
     // The tally behind "a frame where nothing moved draws no pixel" must count pixels, not
     // rows or something near: whole circles, and circles cut by every edge of the canvas.

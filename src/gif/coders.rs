@@ -336,5 +336,9 @@ mod tests {
         );
         let error = coders.next_coded().err().expect("an error, not a frame");
         assert_eq!(error.to_string(), "a GIF coding thread stopped");
+        assert!(
+            eventually(|| Arc::strong_count(&coders.waiting.0) == 1),
+            "the thread went on after its panic"
+        );
     }
 }
