@@ -79,10 +79,10 @@ pub(crate) struct Coders {
 }
 
 impl Coders {
-    /// Starts a coder thread for each core but the caller's, at most `frames - 1`, for at
-    /// most `frames` frames at a time.
-    pub fn start(table_len: usize, frames: usize) -> io::Result<Coders> {
-        Coders::with_threads(table_len, frames, cores().min(frames).max(1) - 1)
+    /// Starts a coder thread for each of `cores` but the caller's, at most `frames - 1`, for
+    /// at most `frames` frames at a time.
+    pub fn start(table_len: usize, cores: usize, frames: usize) -> io::Result<Coders> {
+        Coders::with_threads(table_len, frames, cores.min(frames).max(1) - 1)
     }
 
     fn with_threads(table_len: usize, frames: usize, threads: usize) -> io::Result<Coders> {
@@ -162,7 +162,7 @@ fn coder_gone() -> io::Error {
 
 /// How many cores code frames: [`THREADS_VARIABLE`] if set to a whole number above zero,
 /// else every core.
-fn cores() -> usize {
+pub fn cores() -> usize {
     let set = std::env::var(THREADS_VARIABLE).ok();
     match set.and_then(|n| n.trim().parse::<NonZeroUsize>().ok()) {
         Some(cores) => cores.get(),

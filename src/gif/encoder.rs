@@ -19,7 +19,7 @@ use std::collections::VecDeque;
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
-use super::coders::{Coders, Frame, Numbered};
+use super::coders::{self, Coders, Frame, Numbered};
 use super::delta::{changed_rect, changed_rect_within, crop, paste, Rect};
 use crate::render::palette::Palette;
 use crate::render::{Damage, IndexedFrame};
@@ -31,8 +31,14 @@ pub const QUEUE_PIXELS: usize = 4 << 20;
 /// The most frame slots: enough that the caller seldom waits for a slot while a coder works
 /// on a frame that must be written before the ones already coded.
 pub const MAX_QUEUED_FRAMES: usize = 32;
-/// How many frame slots a GIF of `width` × `height` px has: at least one, at most
-/// [`MAX_QUEUED_FRAMES`], and no more than [`QUEUE_PIXELS`] unless one frame alone is.
+/// Frame slots per core, when they fit in [`QUEUE_PIXELS`]: each core's frame being coded,
+/// two waiting for each coder thread, and one coded ahead of an older frame still being
+/// coded. (Each slot is made at the start with room for a whole frame, so slots that would
+/// never be used are not made.)
+const SLOTS_PER_CORE: usize = 4;
+/// The most frame slots a GIF of `width` × `height` px has, on any number of cores: at least
+/// one, at most [`MAX_QUEUED_FRAMES`], and no more than [`QUEUE_PIXELS`] unless one frame
+/// alone is.
 pub fn queue_frames(width: u32, height: u32) -> usize {
     let frame_pixels = (width as usize * height as usize).max(1);
     (QUEUE_PIXELS / frame_pixels).clamp(1, MAX_QUEUED_FRAMES)
@@ -106,11 +112,11 @@ impl<W: Write> GifWriter<W> {
             .set_repeat(gif::Repeat::Infinite)
             .map_err(gif_error)?;
         let delay_cs = u16::try_from(frame_ms / 10).map_err(io::Error::other)?;
-        let slots = queue_frames(width.into(), height.into());
+        let cores = coders::cores();
+        let slots = queue_frames(width.into(), height.into()).min(SLOTS_PER_CORE * cores);
         let pixels = usize::from(width) * usize::from(height);
         let table_len = palette.colours().len().next_power_of_two().max(2);
-        // Never more coders than slots.
-        let coders = Coders::start(table_len, slots)?;
+        let coders = Coders::start(table_len, cores, slots)?;
         Ok(GifWriter {
             encoder,
             width: width.into(),
@@ -310,7 +316,8 @@ mod tests {
         let mut palette = Palette::new();
         palette.insert([0, 0, 0]);
         let gif = GifWriter::new(Vec::new(), 64, 48, &palette, 30).unwrap();
-        assert_eq!(gif.free.len(), queue_frames(64, 48));
+        let slots = queue_frames(64, 48).min(SLOTS_PER_CORE * coders::cores());
+        assert_eq!(gif.free.len(), slots);
         for slot in &gif.free {
             let held = [&slot.pixels, &slot.beneath, &slot.lzw].map(|buffer| buffer.capacity());
             assert!(held.iter().all(|&bytes| bytes >= 64 * 48), "{held:?} bytes");
