@@ -263,10 +263,7 @@ fn a_still_scene_longer_than_a_gif_delay_can_hold_keeps_its_time() {
     };
     let (_, bytes) = run_through_canvas(&scene);
     assert!(bytes == gif_of_whole_frames(&scene), "the GIFs differ");
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("still.gif");
-    std::fs::write(&path, &bytes).unwrap();
-    let delays = decode_gif(&path).delays_cs;
+    let delays = delays_cs(&bytes);
     let total: u32 = delays.iter().map(|&d| u32::from(d)).sum();
     assert_eq!(total, 700 * 100, "time shown in all, cs: {delays:?}");
     assert!(
@@ -285,11 +282,19 @@ fn frames_shown_for_no_time_are_each_kept_since_a_viewer_times_them_itself() {
         ..still_balls_and(None, 12)
     };
     let (_, bytes) = run_through_canvas(&scene);
+    assert_eq!(
+        delays_cs(&bytes),
+        vec![0; 12],
+        "one frame of delay 0 per frame drawn"
+    );
+}
+
+/// Each frame's delay in the GIF `bytes`, cs.
+fn delays_cs(bytes: &[u8]) -> Vec<u16> {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("still.gif");
-    std::fs::write(&path, &bytes).unwrap();
-    let delays = decode_gif(&path).delays_cs;
-    assert_eq!(delays, vec![0; 12], "one frame of delay 0 per frame drawn");
+    std::fs::write(&path, bytes).unwrap();
+    decode_gif(&path).delays_cs
 }
 
 #[test]
