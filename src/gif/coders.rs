@@ -86,12 +86,14 @@ impl Coders {
     }
 
     fn with_threads(table_len: usize, frames: usize, threads: usize) -> io::Result<Coders> {
-        let waiting = Arc::new(Waiting::for_frames(frames));
+        // Held as `Shared` from the start, so that the threads started stop if a later one
+        // cannot be.
+        let waiting = Shared(Arc::new(Waiting::for_frames(frames)));
         // Room for every frame at once, so a thread never waits to hand one back, and the
         // channel's memory is made here once.
         let (to_caller, from_threads) = sync_channel(frames);
         for n in 1..=threads {
-            let (waiting, to_caller) = (Arc::clone(&waiting), to_caller.clone());
+            let (waiting, to_caller) = (Arc::clone(&waiting.0), to_caller.clone());
             thread::Builder::new()
                 .name(format!("gif coder {n}"))
                 .spawn(move || {
@@ -102,7 +104,7 @@ impl Coders {
                 })?;
         }
         Ok(Coders {
-            waiting: Shared(waiting),
+            waiting,
             from_threads,
             threads,
             coder: Coder::default(),
@@ -181,8 +183,8 @@ fn code_frames(
     while let Some((number, mut frame)) = waiting.wait_for_frame() {
         let coded = catch_unwind(AssertUnwindSafe(|| code(&mut frame)));
         let message = coded.ok().map(|()| (number, frame));
-        let sent = message.is_some();
-        if to_caller.send(message).is_err() || !sent {
+        let panicked = message.is_none();
+        if to_caller.send(message).is_err() || panicked {
             return;
         }
     }
