@@ -236,6 +236,36 @@ fn the_encoder_queue_is_bounded_in_frames_and_pixels_for_any_canvas() {
 }
 
 #[test]
+fn a_canvas_bigger_than_the_queue_still_writes_frame_after_frame() {
+    // One frame fills the queue's pixels, so the writer has a single slot: each frame must be
+    // written before the next is cut, even though a repeat could still have lengthened it.
+    let side = 2049;
+    assert_eq!(queue_frames(side, side), 1, "a single slot");
+    let mut palette = Palette::new();
+    for colour in [[0, 0, 0], [255, 255, 255]] {
+        palette.insert(colour);
+    }
+    let mut gif = GifWriter::new(Vec::new(), side as u16, side as u16, &palette, 30).unwrap();
+    let mut frame = IndexedFrame::new(side, side);
+    for n in 0..3 {
+        frame.put_pixel(n, n, Luma([1]));
+        gif.write_frame(&frame).unwrap();
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("big.gif");
+    std::fs::write(&path, gif.finish().unwrap()).unwrap();
+    let stored: Vec<(u32, u32)> = stored_rects(&path)
+        .iter()
+        .map(|rect| (rect.left, rect.width))
+        .collect();
+    assert_eq!(
+        stored,
+        [(0, side), (1, 1), (2, 1)],
+        "(left, width) of each stored frame"
+    );
+}
+
+#[test]
 fn a_frame_of_the_wrong_size_or_an_empty_canvas_is_an_error_not_a_panic() {
     let scene = lesson_scene();
     let renderer = Renderer::new(&scene).unwrap();

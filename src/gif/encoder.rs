@@ -225,14 +225,16 @@ impl<W: Write> GifWriter<W> {
     }
 
     /// A free slot for the next frame; while none is free, the next coded frame is awaited
-    /// (or coded here) and written.
+    /// (or coded here) and written. The next frame is no repeat, so the newest frame's time
+    /// is final: it is written too once coded (with a single slot, it holds that slot).
     fn free_slot(&mut self) -> io::Result<Frame> {
+        self.write_coded(0)?;
         loop {
             if let Some(slot) = self.free.pop() {
                 return Ok(slot);
             }
             self.next_coded()?;
-            self.write_coded(1)?;
+            self.write_coded(0)?;
         }
     }
 
