@@ -257,11 +257,13 @@ impl<W: Write> GifWriter<W> {
     /// newest `hold` unwritten; their slots are free again.
     fn write_coded(&mut self, hold: usize) -> io::Result<()> {
         let started = Instant::now();
-        while self.unwritten.len() > hold && self.unwritten[0].coded.is_some() {
-            let Some(Unwritten { delay_cs, coded }) = self.unwritten.pop_front() else {
+        while self.unwritten.len() > hold {
+            // The oldest frame not yet coded stops the writing: frames go out in order.
+            let Some(queued) = self.unwritten[0].coded.take() else {
                 break;
             };
-            let queued = coded.expect("the front frame is coded");
+            let delay_cs = self.unwritten[0].delay_cs;
+            self.unwritten.pop_front();
             let rect = queued.rect;
             let frame = gif::Frame {
                 left: rect.left as u16,
