@@ -27,6 +27,8 @@ const MAX_CODE_BITS: u8 = 12;
 const MAX_CODES: u16 = 1 << MAX_CODE_BITS;
 /// Entries in the dictionary's table: one per code and byte.
 const TABLE_LEN: usize = (MAX_CODES as usize) << 8;
+/// How many more codes' entries are written out at a time ([`Lzw::rows_written`]).
+const CODES_WRITTEN_AT_ONCE: u16 = 512;
 
 /// How the coder chooses, where each choice keeps the output a valid GIF.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -128,12 +130,16 @@ pub struct Lzw {
     /// The number of codes at which the greedy coding being written takes its next fork, or
     /// 0 once it has taken them all (and for a coding started from a fork, which takes none).
     next_fork: u16,
-    /// How many of the table's rows (one per byte) have been written. Memory the system
+    /// How much of the table has been written: the entries of each code below
+    /// `codes_written` in each row (one per byte) below `rows_written`. Memory the system
     /// hands over zeroed is mapped to one shared zero page until first written; a coder reads
     /// an entry before it writes it, so each page would fault twice, the second time stopping
     /// the other cores to flush their address caches (a tenth of a default run's time went
-    /// there). So the rows an image can use are written out before it is coded.
+    /// there). So the entries a coding can read are written out before it reads them: the
+    /// rows its image can use, for the codes its dictionary holds so far. The dictionary of a
+    /// small image never holds many codes, so most of the table is never touched at all.
     rows_written: usize,
+    codes_written: u16,
     /// How many codings the coder has begun, and the last one's dictionary where it was
     /// first full (`set` then): a coding that keeps it full goes on from there.
     codings: u64,
@@ -155,6 +161,7 @@ impl Lzw {
                 .try_into()
                 .expect("a table of TABLE_LEN entries"),
             rows_written: 0,
+            codes_written: 0,
             set: Vec::with_capacity(usize::from(MAX_CODES)),
             forks: Forks::default(),
             next_fork: 0,
@@ -233,7 +240,7 @@ impl Lzw {
         self.forks = Forks::default();
         self.next_fork = Choices::SMALL.max_codes;
         self.codings += 1;
-        self.write_rows(1 << min_code_size);
+        self.write_table(1 << min_code_size, start.free);
         Stream::new(start, min_code_size, pixels, choices, budget, bits)
     }
 
@@ -269,6 +276,7 @@ impl Lzw {
         // Here the dictionary has just reached `choices`' size: the greedy coding went on
         // (or cleared), this one does what its choices say.
         let mut state = fork.state;
+        self.write_table(1 << min_code_size, state.free);
         if state.free >= choices.max_codes && choices.clear_when_full {
             clear_dictionary(&mut state, min_code_size, &mut bits);
         } else {
@@ -314,15 +322,22 @@ impl Lzw {
         (code, pixels.len())
     }
 
-    /// Writes the table's rows for bytes below `rows` out, if not yet done.
-    fn write_rows(&mut self, rows: usize) {
-        if rows > self.rows_written {
-            let new_rows =
-                &mut self.next[self.rows_written << MAX_CODE_BITS..rows << MAX_CODE_BITS];
-            // `black_box` hides that the memory is zero already, so the writes are not left out.
-            std::hint::black_box(new_rows).fill(0);
-            self.rows_written = rows;
+    /// Writes the table's entries for the bytes below `rows` and the codes below `codes` out,
+    /// where not yet done, [`CODES_WRITTEN_AT_ONCE`] codes at a time.
+    fn write_table(&mut self, rows: usize, codes: u16) {
+        let (old_rows, old_codes) = (self.rows_written, self.codes_written);
+        let codes = codes.next_multiple_of(CODES_WRITTEN_AT_ONCE).min(MAX_CODES);
+        let (rows, codes) = (rows.max(old_rows), codes.max(old_codes));
+        if (rows, codes) == (old_rows, old_codes) {
+            return; // the common case: written already
         }
+        for row in 0..rows {
+            let from = if row < old_rows { old_codes } else { 0 };
+            let entries = &mut self.next[row << MAX_CODE_BITS..][from.into()..codes.into()];
+            // `black_box` hides that the memory is zero already, so the writes are not left out.
+            std::hint::black_box(entries).fill(0);
+        }
+        (self.rows_written, self.codes_written) = (rows, codes);
     }
 
     /// Keeps where the dictionary first reached the small size, then the half size, then
@@ -426,6 +441,9 @@ impl<'p, 'o> Stream<'p, 'o> {
             lzw.next[slot] = state.free;
             lzw.set.push(slot);
             state.free += 1;
+            if state.free > lzw.codes_written {
+                lzw.write_table(lzw.rows_written, state.free);
+            }
             // The decoder adds each code one code after we do, and widens once its next
             // free code no longer fits: so we widen once ours is one past that.
             if state.free > 1 << state.width {
@@ -562,4 +580,48 @@ impl<'a> BitPacker<'a> {
 pub fn min_code_size(colours: usize) -> u8 {
     let bits = usize::BITS - colours.saturating_sub(1).leading_zeros();
     bits.max(2) as u8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::random::Random;
+
+    /// `count` pixels of random indices below `colours`, and their greedy coding by `lzw`:
+    /// the most codes its dictionary held.
+    fn code_noise(lzw: &mut Lzw, count: usize, colours: u64) -> u16 {
+        let mut random = Random::new(7);
+        let pixels: Vec<u8> = (0..count)
+            .map(|_| (random.next_u64() % colours) as u8)
+            .collect();
+        let code_size = min_code_size(colours as usize);
+        let mut out = Vec::new();
+        lzw.compress(code_size, &pixels, Choices::GREEDY, usize::MAX, &mut out)
+            .expect("no budget to give up at")
+    }
+
+    #[test]
+    fn a_small_image_writes_out_only_the_start_of_its_rows() {
+        let mut lzw = Lzw::new();
+        let most = code_noise(&mut lzw, 300, 4);
+        assert!(most < CODES_WRITTEN_AT_ONCE, "{most} codes held");
+        assert_eq!(
+            (lzw.rows_written, lzw.codes_written),
+            (4, CODES_WRITTEN_AT_ONCE),
+            "rows and codes written out, where the dictionary held {most} codes"
+        );
+    }
+
+    #[test]
+    fn the_table_is_written_out_ahead_of_every_code_the_dictionary_holds() {
+        let mut lzw = Lzw::new();
+        let most = code_noise(&mut lzw, 3000, 16);
+        assert!(most > 2 * CODES_WRITTEN_AT_ONCE, "{most} codes held");
+        assert!(lzw.codes_written >= most, "{} < {most}", lzw.codes_written);
+        assert!(lzw.codes_written - most < CODES_WRITTEN_AT_ONCE);
+        // A later image with more indices adds its rows, as long as the others.
+        let written = lzw.codes_written;
+        code_noise(&mut lzw, 10, 64);
+        assert_eq!((lzw.rows_written, lzw.codes_written), (64, written));
+    }
 }
