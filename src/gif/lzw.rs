@@ -21,6 +21,8 @@
 //! memory. Two images coded side by side in one loop ([`Lzw::compress_pair`], each with its
 //! own coder) overlap their waits: the encoder codes each layout's two row orders that way.
 
+use std::ops::Range;
+
 /// GIF codes are at most 12 bits wide.
 const MAX_CODE_BITS: u8 = 12;
 /// So a dictionary holds at most this many codes.
@@ -274,9 +276,9 @@ impl Lzw {
             pending_bits: fork.pending_bits,
         };
         // Here the dictionary has just reached `choices`' size: the greedy coding went on
-        // (or cleared), this one does what its choices say.
+        // (or cleared), this one does what its choices say. (The table is written out far
+        // enough: a cleared dictionary starts afresh, and one kept full is this coder's own.)
         let mut state = fork.state;
-        self.write_table(1 << min_code_size, state.free);
         if state.free >= choices.max_codes && choices.clear_when_full {
             clear_dictionary(&mut state, min_code_size, &mut bits);
         } else {
@@ -331,12 +333,17 @@ impl Lzw {
         if (rows, codes) == (old_rows, old_codes) {
             return; // the common case: written already
         }
-        for row in 0..rows {
-            let from = if row < old_rows { old_codes } else { 0 };
-            let entries = &mut self.next[row << MAX_CODE_BITS..][from.into()..codes.into()];
-            // `black_box` hides that the memory is zero already, so the writes are not left out.
-            std::hint::black_box(entries).fill(0);
-        }
+        // The rows written before, for their new codes; then the new rows, for every code.
+        let mut write = |rows: Range<usize>, codes: Range<u16>| {
+            for row in rows {
+                let entries = &mut self.next[row << MAX_CODE_BITS..];
+                let entries = &mut entries[codes.start.into()..codes.end.into()];
+                // `black_box` hides that the memory is zero already, so the writes stay.
+                std::hint::black_box(entries).fill(0);
+            }
+        };
+        write(0..old_rows, old_codes..codes);
+        write(old_rows..rows, 0..codes);
         (self.rows_written, self.codes_written) = (rows, codes);
     }
 
