@@ -334,10 +334,10 @@ impl Lzw {
             return; // the common case: written already
         }
         // The rows written before, for their new codes; then the new rows, for every code.
-        let mut write = |rows: Range<usize>, codes: Range<u16>| {
-            for row in rows {
+        let mut write = |these_rows: Range<usize>, these_codes: Range<u16>| {
+            for row in these_rows {
                 let entries = &mut self.next[row << MAX_CODE_BITS..];
-                let entries = &mut entries[codes.start.into()..codes.end.into()];
+                let entries = &mut entries[these_codes.start.into()..these_codes.end.into()];
                 // `black_box` hides that the memory is zero already, so the writes stay.
                 std::hint::black_box(entries).fill(0);
             }
