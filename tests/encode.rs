@@ -509,94 +509,33 @@ fn lzw_gives_up_once_its_output_reaches_the_budget() {
     );
 }
 
-/// Codes `pixels` alone, greedy, within `budget`: the output, the result and the forks (as
-/// text: a fork is only ever compared whole).
-fn code_alone(code_size: u8, pixels: &[u8], budget: usize) -> (Vec<u8>, Option<u16>, String) {
-    let (mut lzw, mut data) = (Lzw::new(), Vec::new());
-    let result = lzw.compress(code_size, pixels, Choices::GREEDY, budget, &mut data);
-    (data, result, format!("{:?}", lzw.forks()))
-}
-
 #[test]
-fn two_images_coded_as_a_pair_are_the_same_bytes_and_forks_as_each_coded_alone() {
-    let mut random = Random::new(8);
-    let noise = noise(150 * 100, &mut random);
-    let runs = random_frame(150, 100, 16, &mut random).into_raw();
-    // Equal lengths (a layout's two row orders), one shorter than the other (the longer goes
-    // on alone), an empty one, and noise that fills the dictionary (every fork taken).
-    let pairs: [(&[u8], &[u8]); 5] = [
-        (&runs, &noise),
-        (&noise, &runs),
-        (&runs[..4000], &noise),
-        (&noise, &runs[..1]),
-        (&[], &runs),
-    ];
-    let (mut out, mut other_out) = (Vec::new(), Vec::new());
-    for (n, (a, b)) in pairs.into_iter().enumerate() {
-        // Fresh coders, as alone: a fork names its coder's count of codings.
-        let (mut first, mut second) = (Lzw::new(), Lzw::new());
-        let [result_a, result_b] = first.compress_pair(
-            &mut second,
-            4,
-            [a, b],
-            usize::MAX,
-            [&mut out, &mut other_out],
-        );
-        let paired = [
-            (out.clone(), result_a, format!("{:?}", first.forks())),
-            (other_out.clone(), result_b, format!("{:?}", second.forks())),
-        ];
-        let alone = [code_alone(4, a, usize::MAX), code_alone(4, b, usize::MAX)];
-        assert!(paired == alone, "pair {n}: paired and alone differ");
-        // The forks work from the pair as from a coding alone.
-        if let Some(fork) = second.forks().full {
-            let resumed = second.compress_from(
-                fork,
-                Choices::KEEP_FULL,
-                b,
-                &other_out,
-                usize::MAX,
-                &mut out,
-            );
-            let mut alone = Vec::new();
-            Lzw::new().compress(4, b, Choices::KEEP_FULL, usize::MAX, &mut alone);
-            assert_eq!(
-                (resumed.is_some(), &out),
-                (true, &alone),
-                "pair {n}: the full dictionary kept from the pair's fork"
-            );
+fn long_runs_of_one_colour_are_coded_as_the_gif_crate_codes_them() {
+    // Runs longer and shorter than the longest run the dictionary holds of their colour, and
+    // runs that end where the image does: our coder takes a run in one step, the gif
+    // crate's a pixel at a time.
+    let mut random = Random::new(11);
+    let mut lzw = Lzw::new();
+    let mut ours = Vec::new();
+    for image in 0..40 {
+        let mut pixels = Vec::new();
+        for _ in 0..1 + image {
+            let run = 1 + (random.next_u64() % 600) as usize;
+            pixels.extend(std::iter::repeat_n((random.next_u64() % 3) as u8, run));
         }
-    }
-}
-
-#[test]
-fn in_a_pair_the_coding_that_reaches_the_budget_gives_up_and_the_other_goes_on() {
-    let mut random = Random::new(9);
-    let runs = random_frame(150, 100, 16, &mut random).into_raw();
-    let noise = noise(150 * 100, &mut random);
-    let (small, _, _) = code_alone(4, &runs, usize::MAX);
-    let (big, _, _) = code_alone(4, &noise, usize::MAX);
-    assert!(small.len() < big.len(), "runs pack better than noise");
-    let budget = big.len();
-    let (mut first, mut second) = (Lzw::new(), Lzw::new());
-    let (mut out, mut other_out) = (Vec::new(), Vec::new());
-    for order in [[&noise, &runs], [&runs, &noise]] {
-        let results = first.compress_pair(
-            &mut second,
-            4,
-            [order[0], order[1]],
-            budget,
-            [&mut out, &mut other_out],
-        );
-        let given_up = results.map(|result| result.is_none());
-        let noise_first = std::ptr::eq(order[0], &noise);
+        let most = lzw.compress(2, &pixels, Choices::GREEDY, usize::MAX, &mut ours);
+        assert!(most < Some(4096), "image {image}: the dictionary has room");
+        let mut frame = gif::Frame {
+            width: pixels.len() as u16,
+            height: 1,
+            buffer: pixels.into(),
+            ..gif::Frame::default()
+        };
+        frame.make_lzw_pre_encoded();
         assert_eq!(
-            given_up,
-            [noise_first, !noise_first],
-            "only the noise reaches its own size"
+            ours, *frame.buffer,
+            "image {image}: ours, then the gif crate's"
         );
-        let runs_out = if noise_first { &other_out } else { &out };
-        assert_eq!(runs_out, &small, "the runs are coded whole all the same");
     }
 }
 

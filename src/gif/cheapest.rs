@@ -8,8 +8,8 @@
 //!   mixed-stretch layout is tried when an index is free to mean transparent and the marking
 //!   leaves at least [`MIN_RUNS_SAVED`] fewer runs of one index (else it is skipped); the
 //!   every-pixel layout only after the mixed-stretch one was tried;
-//! - each in normal and in interlaced row order ([`super::interlace`]), the two coded side
-//!   by side ([`Lzw::compress_pair`]) and then taken in that order.
+//! - each in normal and in interlaced row order ([`super::interlace`]), in that order, so
+//!   that the normal order wins a tie.
 //!
 //! Each also with a full dictionary kept to the end ([`Choices::KEEP_FULL`]) instead of
 //! cleared, when the dictionary fills; and the winning layout with half the dictionary
@@ -42,10 +42,9 @@ pub(crate) struct Encoding {
 /// allocates once warmed up: the LZW coders and scratch buffers.
 #[derive(Default)]
 pub(crate) struct Coder {
-    /// Two LZW coders, so that a layout's two row orders are coded at once
-    /// ([`Lzw::compress_pair`]). Made on the first frame, by the thread that codes (their
-    /// tables are written out then, 2 MB each at most).
-    lzw: Option<[Lzw; 2]>,
+    /// The LZW coder. Made on the first frame, by the thread that codes (its table is
+    /// written out then, 2 MB at most).
+    lzw: Option<Lzw>,
     /// A marked layout's indices, in normal row order.
     layout: Vec<u8>,
     /// The same in interlaced order.
@@ -53,9 +52,9 @@ pub(crate) struct Coder {
     /// The winning layout so far, in the order it is stored, when the small dictionary is
     /// to be tried on it.
     winner: Vec<u8>,
-    /// The two row orders' compressed bytes, and another candidate's made from the first
-    /// part of one of them.
-    candidates: [Vec<u8>; 2],
+    /// A row order's compressed bytes, and another candidate's made from the first part of
+    /// them.
+    candidate: Vec<u8>,
     other: Vec<u8>,
 }
 
@@ -79,13 +78,13 @@ impl Coder {
             layout,
             interlaced,
             winner,
-            candidates,
+            candidate,
             other,
         } = self;
         let mut search = Search {
-            lzw: lzw.get_or_insert_with(|| [Lzw::new(), Lzw::new()]),
+            lzw: lzw.get_or_insert_with(Lzw::new),
             winner,
-            candidates,
+            candidate,
             other,
             best,
             budget: usize::MAX,
@@ -158,13 +157,12 @@ impl<'a> Marking<'a> {
 /// One frame's search for its smallest coding: the coder and buffers it borrows, and the
 /// best coding so far. Every candidate gives up once it is no smaller than the best.
 struct Search<'a> {
-    /// The coders of the normal and the interlaced row order.
-    lzw: &'a mut [Lzw; 2],
+    lzw: &'a mut Lzw,
     /// The winning layout so far, when a smaller dictionary is to be tried on it.
     winner: &'a mut Vec<u8>,
-    /// The two row orders' compressed bytes, and another candidate's made from the first
-    /// part of one of them.
-    candidates: &'a mut [Vec<u8>; 2],
+    /// A row order's compressed bytes, and another candidate's made from the first part of
+    /// them.
+    candidate: &'a mut Vec<u8>,
     other: &'a mut Vec<u8>,
     /// The best coding's bytes.
     best: &'a mut Vec<u8>,
@@ -193,49 +191,35 @@ impl Search<'_> {
         let largest_index = largest(normal).max(transparent.unwrap_or(0));
         let code_size = min_code_size(usize::from(largest_index) + 1);
         interlace(normal, width, interlaced);
-        let orders = [normal, &interlaced[..]];
-        let [coder, other_coder] = &mut *self.lzw;
-        let [normal_out, interlaced_out] = &mut *self.candidates;
-        let greedy = coder.compress_pair(
-            other_coder,
-            code_size,
-            orders,
-            self.budget,
-            [normal_out, interlaced_out],
-        );
-        // Taken in order, so the normal order wins a tie, as it would coded first.
-        for (order, is_interlaced) in [(0, false), (1, true)] {
+        // The normal order first: it wins a tie.
+        for (pixels, is_interlaced) in [(normal, false), (&interlaced[..], true)] {
+            let choices = Choices::GREEDY;
+            let greedy = self
+                .lzw
+                .compress(code_size, pixels, choices, self.budget, self.candidate);
             let encoding = Encoding {
                 transparent,
                 interlaced: is_interlaced,
             };
-            self.take_candidate(order, orders[order], greedy[order], encoding);
+            self.take_candidate(pixels, greedy, encoding);
         }
     }
 
-    /// Takes the greedy coding of `pixels` by coder `order` (`greedy`: the most codes its
-    /// dictionary held, if it finished), and codes it again with the full dictionary kept if
-    /// it filled; whichever is smaller than the best becomes the best, encoded as `encoding`.
-    fn take_candidate(
-        &mut self,
-        order: usize,
-        pixels: &[u8],
-        greedy: Option<u16>,
-        encoding: Encoding,
-    ) {
-        // Coded beside the other order, within the budget before either: it wins only if
-        // smaller than the best now.
-        let greedy = greedy.filter(|_| self.candidates[order].len() < self.budget);
-        let forks = self.lzw[order].forks();
+    /// Takes the greedy coding of `pixels` just made (`greedy`: the most codes its
+    /// dictionary held, if it finished within the budget), and codes it again with the full
+    /// dictionary kept if it filled; whichever is smaller than the best becomes the best,
+    /// encoded as `encoding`.
+    fn take_candidate(&mut self, pixels: &[u8], greedy: Option<u16>, encoding: Encoding) {
+        let forks = self.lzw.forks();
         if greedy.is_some() {
-            swap(self.best, &mut self.candidates[order]);
+            swap(self.best, self.candidate);
             self.budget = self.best.len();
         }
         // A dictionary kept full only differs once it fills (big frames), so it is tried on
         // every layout.
         let kept_full = forks
             .full
-            .and_then(|fork| self.keep_full(order, fork, pixels, greedy.is_some()));
+            .and_then(|fork| self.keep_full(fork, pixels, greedy.is_some()));
         // The most codes the winning coding's dictionary held, if it won.
         let Some(codes) = kept_full.or(greedy) else {
             return;
@@ -253,25 +237,20 @@ impl Search<'_> {
         self.encoding = encoding;
     }
 
-    /// Codes `pixels` with the full dictionary kept by coder `order`, from `fork`, where its
-    /// greedy coding first filled it, and keeps it if it is the smallest. The greedy coding
-    /// is the best when `greedy_won`, else the candidate: a given-up coding still holds the
-    /// bytes up to the fork. Returns the most codes the dictionary held, if it won.
-    fn keep_full(
-        &mut self,
-        order: usize,
-        fork: Fork,
-        pixels: &[u8],
-        greedy_won: bool,
-    ) -> Option<u16> {
+    /// Codes `pixels` with the full dictionary kept, from `fork`, where their greedy coding
+    /// first filled it, and keeps it if it is the smallest. The greedy coding is the best
+    /// when `greedy_won`, else the candidate: a given-up coding still holds the bytes up to
+    /// the fork. Returns the most codes the dictionary held, if it won.
+    fn keep_full(&mut self, fork: Fork, pixels: &[u8], greedy_won: bool) -> Option<u16> {
         let first = if greedy_won {
             &self.best[..]
         } else {
-            &self.candidates[order][..]
+            &self.candidate[..]
         };
         let choices = Choices::KEEP_FULL;
         let coded =
-            self.lzw[order].compress_from(fork, choices, pixels, first, self.budget, self.other)?;
+            self.lzw
+                .compress_from(fork, choices, pixels, first, self.budget, self.other)?;
         swap(self.best, self.other);
         self.budget = self.best.len();
         Some(coded)
@@ -290,9 +269,8 @@ impl Search<'_> {
             let Some(fork) = fork else {
                 continue;
             };
-            // (A fork into a smaller dictionary needs none of the one it forks from: either
-            // coder can take it.)
-            let coded = self.lzw[0].compress_from(
+            // (A fork into a smaller dictionary needs none of the one it forks from.)
+            let coded = self.lzw.compress_from(
                 fork,
                 choices,
                 self.winner,

@@ -18,10 +18,14 @@
 //! so they start from there ([`Fork`]).
 //!
 //! Each pixel's lookup needs the code the last one found, so a coding mostly waits for
-//! memory. Two images coded side by side in one loop ([`Lzw::compress_pair`], each with its
-//! own coder) overlap their waits: the encoder codes each layout's two row orders that way.
+//! memory. But most of a frame is runs of one colour, and the strings of two, three, … of
+//! one colour are in the dictionary in that order: so a string that starts on a run takes
+//! as much of it as the longest of those at once, without a lookup per pixel (`super::runs`).
+//! It is the same string, so the same bytes.
 
 use std::ops::Range;
+
+use super::runs::{leading, Runs};
 
 /// GIF codes are at most 12 bits wide.
 const MAX_CODE_BITS: u8 = 12;
@@ -146,6 +150,8 @@ pub struct Lzw {
     /// first full (`set` then): a coding that keeps it full goes on from there.
     codings: u64,
     full_dictionary: Vec<usize>,
+    /// The dictionary's runs of one byte, so that a string takes a run at once.
+    runs: Runs,
 }
 
 impl Default for Lzw {
@@ -169,6 +175,7 @@ impl Lzw {
             next_fork: 0,
             codings: 0,
             full_dictionary: Vec::with_capacity(usize::from(MAX_CODES)),
+            runs: Runs::default(),
         }
     }
 
@@ -187,41 +194,6 @@ impl Lzw {
     ) -> Option<u16> {
         let coding = self.begin(min_code_size, pixels, choices, budget, out);
         self.code(coding)
-    }
-
-    /// The same as [`Lzw::compress`] on `pixels[0]` with `self` and on `pixels[1]` with
-    /// `other`, greedy, both within `budget`, but in one loop that reads a pixel of each in
-    /// turn. A coding waits on memory at every pixel (the next lookup needs the code the last
-    /// one found); the two codings' waits overlap, so the pair takes half to three quarters
-    /// of the time of one after the other (docs/gif.md).
-    pub fn compress_pair(
-        &mut self,
-        other: &mut Lzw,
-        min_code_size: u8,
-        pixels: [&[u8]; 2],
-        budget: usize,
-        [out, other_out]: [&mut Vec<u8>; 2],
-    ) -> [Option<u16>; 2] {
-        let greedy = Choices::GREEDY;
-        let mut first = self.begin(min_code_size, pixels[0], greedy, budget, out);
-        let mut second = other.begin(min_code_size, pixels[1], greedy, budget, other_out);
-        // Both walk on while both have pixels left; where one's string stops growing, it
-        // writes its code (and may give up), and the other takes the pixel it found.
-        while let Some([found, other_found]) =
-            walk_both([&*self.next, &*other.next], [&mut first, &mut second])
-        {
-            let first_on = first.take_or_extend(found, self);
-            let second_on = second.take_or_extend(other_found, other);
-            if !(first_on && second_on) {
-                // One gave up: the other goes on alone.
-                return [
-                    first_on.then(|| self.code(first)).flatten(),
-                    second_on.then(|| other.code(second)).flatten(),
-                ];
-            }
-        }
-        // One has no pixel left (or both): each finishes alone.
-        [self.code(first), other.code(second)]
     }
 
     /// Starts a greedy or other coding of `pixels` into `out` from the first pixel: the code
@@ -286,14 +258,23 @@ impl Lzw {
                 fork.coding, self.codings,
                 "a fork into a full dictionary is taken before the next coding"
             );
-            let first_code = Coding::fresh(min_code_size).free;
-            for (code, &slot) in (first_code..).zip(&self.full_dictionary) {
-                self.next[slot] = code;
-            }
-            self.set.clone_from(&self.full_dictionary);
+            self.restore_full_dictionary(Coding::fresh(min_code_size).free);
         }
         let coding = Stream::new(state, min_code_size, pixels, choices, budget, bits);
         self.code(coding)
+    }
+
+    /// Fills the dictionary, empty, with the last greedy coding's where it was first full,
+    /// its runs included: the strings from `first_code` on.
+    fn restore_full_dictionary(&mut self, first_code: u16) {
+        let dictionary = std::mem::take(&mut self.full_dictionary);
+        for (code, &slot) in (first_code..).zip(&dictionary) {
+            self.next[slot] = code;
+            let (before, byte) = unslot(slot);
+            self.runs.note(before, byte, code);
+        }
+        self.set.clone_from(&dictionary);
+        self.full_dictionary = dictionary;
     }
 
     /// Codes the rest of `stream`'s pixels: the LZW loop itself.
@@ -377,6 +358,7 @@ impl Lzw {
         for slot in self.set.drain(..) {
             self.next[slot] = 0;
         }
+        self.runs.forget();
     }
 }
 
@@ -447,6 +429,7 @@ impl<'p, 'o> Stream<'p, 'o> {
             let slot = slot(self.code, byte);
             lzw.next[slot] = state.free;
             lzw.set.push(slot);
+            lzw.runs.note(self.code, byte, state.free);
             state.free += 1;
             if state.free > lzw.codes_written {
                 lzw.write_table(lzw.rows_written, state.free);
@@ -462,20 +445,26 @@ impl<'p, 'o> Stream<'p, 'o> {
         }
         self.code = u16::from(byte);
         self.read += 1;
+        self.take_run(byte, lzw.runs.of(byte));
         true
     }
 
-    /// For [`Lzw::compress_pair`]: takes the next pixel into the string if `found`, its
-    /// lookup, is a code (not 0), and extends the string there otherwise. Returns false where
-    /// the coding gave up.
+    /// From the string of one `byte`: takes the `byte`s that follow it at once, as far as
+    /// `runs` (that byte's runs in the dictionary) reach. The same string as reading them one
+    /// by one, without a lookup for each.
     #[inline(always)]
-    fn take_or_extend(&mut self, found: u16, lzw: &mut Lzw) -> bool {
-        if found == 0 {
-            return self.extend(lzw);
+    fn take_run(&mut self, byte: u8, runs: &[u16]) {
+        // Most strings do not start on a run: one comparison says so.
+        if self.pixels.get(self.read) != Some(&byte) {
+            return;
         }
-        self.code = found;
-        self.read += 1;
-        true
+        let ahead = &self.pixels[self.read..];
+        let ahead = &ahead[..runs.len().min(ahead.len())];
+        let same = leading(ahead, byte);
+        if same > 0 {
+            self.code = runs[same - 1];
+            self.read += same;
+        }
     }
 
     /// With every pixel read: writes the last string's code and the end code. Returns the
@@ -495,32 +484,6 @@ impl<'p, 'o> Stream<'p, 'o> {
         lzw.forget();
         (written < self.budget).then_some(state.most.max(state.free))
     }
-}
-
-/// [`Lzw::walk`] for two codings at once, one pixel of each in turn, with `tables` their
-/// dictionaries, until either string cannot grow by its next pixel or either coding has no
-/// pixel left. Both read as many pixels; returns the two lookups of the pixel where one
-/// stopped (0 where a string is not in the dictionary), or `None` where one ran out.
-#[inline(always)]
-fn walk_both(tables: [&[u16; TABLE_LEN]; 2], [a, b]: [&mut Stream; 2]) -> Option<[u16; 2]> {
-    let (mut code_a, mut code_b) = (a.code, b.code);
-    let (unread_a, unread_b) = (a.unread(), b.unread());
-    let mut read = 0;
-    let mut lookups = None;
-    for (&byte_a, &byte_b) in unread_a.iter().zip(unread_b) {
-        let found_a = tables[0][slot(code_a, byte_a)];
-        let found_b = tables[1][slot(code_b, byte_b)];
-        if found_a == 0 || found_b == 0 {
-            lookups = Some([found_a, found_b]);
-            break;
-        }
-        (code_a, code_b) = (found_a, found_b);
-        read += 1;
-    }
-    (a.code, b.code) = (code_a, code_b);
-    a.read += read;
-    b.read += read;
-    lookups
 }
 
 /// Writes a clear code and starts the codes afresh (the caller empties the dictionary).
@@ -543,6 +506,14 @@ fn slot(code: u16, byte: u8) -> usize {
     // Codes are below 4096, so this is always inside the table, and the compiler can see it
     // (no bounds check in the hot loop).
     usize::from(byte) << MAX_CODE_BITS | usize::from(code & (MAX_CODES - 1))
+}
+
+/// The string and the byte whose entry [`slot`] gives.
+fn unslot(slot: usize) -> (u16, u8) {
+    (
+        (slot & usize::from(MAX_CODES - 1)) as u16,
+        (slot >> MAX_CODE_BITS) as u8,
+    )
 }
 
 /// Packs codes of any width into bytes, least significant bit first, as GIF wants.
@@ -605,6 +576,68 @@ mod tests {
         let mut out = Vec::new();
         lzw.compress(code_size, &pixels, Choices::GREEDY, usize::MAX, &mut out)
             .expect("no budget to give up at")
+    }
+
+    /// The runs of `byte` that `lzw`'s table holds, found by walking it from `byte` along
+    /// `byte`s: the codes of two, three, … `byte`s.
+    fn runs_in_table(lzw: &Lzw, byte: u8) -> Vec<u16> {
+        let mut runs = Vec::new();
+        let mut code = u16::from(byte);
+        while lzw.next[slot(code, byte)] != 0 {
+            code = lzw.next[slot(code, byte)];
+            runs.push(code);
+        }
+        runs
+    }
+
+    #[test]
+    fn a_string_that_starts_on_a_run_takes_as_much_of_it_as_the_dictionary_holds() {
+        let pixels = [5, 5, 5, 5, 5, 5, 7, 5];
+        // (runs of 5 in the dictionary, where the string starts) → (its code, pixels read)
+        let cases: [(&[u16], usize, u16, usize); 5] = [
+            (&[], 0, 5, 1),                               // no run of two yet
+            (&[100, 101, 102], 0, 102, 4),                // the longest run held
+            (&[100, 101, 102, 103, 104, 105], 0, 104, 6), // the image's whole run
+            (&[100], 6, 7, 7),                            // no run of 7 follows
+            (&[100, 101], 7, 5, 8),                       // no pixel left
+        ];
+        for (runs, at, code, read) in cases {
+            let mut out = Vec::new();
+            let state = Coding {
+                at,
+                ..Coding::fresh(3)
+            };
+            let choices = Choices::GREEDY;
+            let bits = BitPacker::new(&mut out);
+            let mut stream = Stream::new(state, 3, &pixels, choices, usize::MAX, bits);
+            stream.take_run(pixels[at], runs);
+            assert_eq!(
+                (stream.code, stream.read),
+                (code, read),
+                "{runs:?} from {at}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_full_dictionary_restored_holds_its_runs() {
+        let mut lzw = Lzw::new();
+        // Runs of 1 to 12 of four bytes fill the dictionary, runs of each byte among them.
+        let mut random = Random::new(3);
+        let mut pixels = Vec::new();
+        while pixels.len() < 60_000 {
+            let (byte, run) = (random.next_u64() % 4, 1 + random.next_u64() % 12);
+            pixels.extend(std::iter::repeat_n(byte as u8, run as usize));
+        }
+        let mut out = Vec::new();
+        lzw.compress(2, &pixels, Choices::GREEDY, usize::MAX, &mut out);
+        assert!(lzw.forks.full.is_some(), "the dictionary filled");
+        lzw.restore_full_dictionary(Coding::fresh(2).free);
+        for byte in 0..4 {
+            let runs = runs_in_table(&lzw, byte);
+            assert!(runs.len() >= 8, "{} runs of {byte}", runs.len());
+            assert_eq!(lzw.runs.of(byte), runs, "runs of {byte}");
+        }
     }
 
     #[test]

@@ -4,6 +4,7 @@
 //! - `transparency`: unchanged pixels marked transparent, two ways.
 //! - `interlace`: GIF's interlaced row order, another order for LZW to read.
 //! - [`lzw`]: GIF's LZW compression, one coder per thread.
+//! - `runs`: the runs of one colour a coder's dictionary holds, so that it takes a run at once.
 //! - `cheapest`: each frame's smallest encoding among a few candidates.
 //! - `coders`: frames compressed on every core, the caller's included.
 //! - `encoder`: frames cut to what changed, handed to the coders, written in order.
@@ -14,6 +15,7 @@ pub mod delta;
 pub(crate) mod encoder;
 pub(crate) mod interlace;
 pub mod lzw;
+pub(crate) mod runs;
 pub(crate) mod transparency;
 
 pub use encoder::GifWriter;
