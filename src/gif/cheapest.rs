@@ -39,7 +39,7 @@ pub(crate) struct Encoding {
 }
 
 /// One thread's tools for choosing and compressing, kept for the whole run so that no frame
-/// allocates once warmed up: the LZW coders and scratch buffers.
+/// allocates once warmed up: the LZW coder and scratch buffers.
 #[derive(Default)]
 pub(crate) struct Coder {
     /// The LZW coder. Made on the first frame, by the thread that codes (its table is
@@ -157,6 +157,7 @@ impl<'a> Marking<'a> {
 /// One frame's search for its smallest coding: the coder and buffers it borrows, and the
 /// best coding so far. Every candidate gives up once it is no smaller than the best.
 struct Search<'a> {
+    /// The LZW coder, which codes every candidate in turn.
     lzw: &'a mut Lzw,
     /// The winning layout so far, when a smaller dictionary is to be tried on it.
     winner: &'a mut Vec<u8>,
