@@ -33,15 +33,17 @@ pub(super) struct Cells {
     rows: usize,
     /// The balls in each cell.
     balls: Lists,
-    /// Per ball: its cell's column and row.
-    at: Vec<[usize; 2]>,
+    /// Per ball: its cell's column and row (32 bits each, half of `usize`: a grid has at
+    /// most `MAX_CELLS_PER_BALL` cells a ball, and every byte a ball keeps counts against
+    /// the cache).
+    at: Vec<[u32; 2]>,
 }
 
 impl Cells {
     /// Memory per ball, bytes: its cell's column and row, its place in the cell's list, and
     /// up to `MAX_CELLS_PER_BALL` cells' list heads.
     pub(crate) const BYTES_PER_BALL: u64 =
-        (size_of::<[usize; 2]>() + MAX_CELLS_PER_BALL as usize * size_of::<u32>()) as u64
+        (size_of::<[u32; 2]>() + MAX_CELLS_PER_BALL as usize * size_of::<u32>()) as u64
             + Lists::BYTES_PER_BALL;
 
     /// Lays a grid over the balls as they are now and over `area` (the box from the origin to
@@ -85,7 +87,7 @@ impl Cells {
         for (i, ball) in balls.iter().enumerate() {
             let column = (((ball.x - left) / self.size) as usize).min(self.columns - 1);
             let row = (((ball.y - top) / self.size) as usize).min(self.rows - 1);
-            self.at.push([column, row]);
+            self.at.push([column as u32, row as u32]);
             self.link(i);
         }
     }
@@ -106,13 +108,14 @@ impl Cells {
 
     /// Puts ball `i` in the cell `at[i]` says.
     fn link(&mut self, i: usize) {
-        self.balls.insert(i, self.cell(self.at[i]));
+        self.balls
+            .insert(i, self.cell(self.at[i].map(|index| index as usize)));
     }
 
     /// Calls `visit` with every ball in ball `i`'s cell and the eight around it (`i` included).
     pub(crate) fn neighbours(&self, i: usize, visit: impl FnMut(usize)) {
         let counts = [self.columns, self.rows];
-        let around = [0, 1].map(|a| around(self.at[i][a], counts[a]));
+        let around = [0, 1].map(|a| around(self.at[i][a] as usize, counts[a]));
         self.visit_cells(around, visit);
     }
 
@@ -121,10 +124,10 @@ impl Cells {
     /// three cells (fewer at the grid's edge, none past it).
     pub(crate) fn entered(&self, i: usize, axis: u8, towards: i8, visit: impl FnMut(usize)) {
         let counts = [self.columns, self.rows];
-        let mut cells = [0, 1].map(|a| around(self.at[i][a], counts[a]));
+        let mut cells = [0, 1].map(|a| around(self.at[i][a] as usize, counts[a]));
         let a = usize::from(axis);
         // Past the first cell this wraps to `usize::MAX`, past the last it reaches `count`.
-        let far = self.at[i][a].wrapping_add_signed(isize::from(towards));
+        let far = (self.at[i][a] as usize).wrapping_add_signed(isize::from(towards));
         if far >= counts[a] {
             return;
         }
@@ -151,7 +154,7 @@ impl Cells {
         let mut first: Option<(f64, u8, i8)> = None;
         for axis in 0..2u8 {
             let a = usize::from(axis);
-            let index = self.at[i][a];
+            let index = self.at[i][a] as usize;
             let low = origin[a] + index as f64 * self.size - self.margin;
             let high = low + self.size + 2.0 * self.margin;
             let mut try_border = |border: f64, towards: i8| {
@@ -176,7 +179,7 @@ impl Cells {
     pub(crate) fn shift(&mut self, i: usize, axis: u8, towards: i8) {
         self.balls.remove(i);
         let at = &mut self.at[i][usize::from(axis)];
-        *at = at.wrapping_add_signed(isize::from(towards));
+        *at = at.wrapping_add_signed(i32::from(towards));
         self.link(i);
     }
 }

@@ -33,8 +33,12 @@ pub(super) enum EventKind {
     Cell { axis: u8, towards: i8 },
 }
 
-/// One ball's next event.
+/// One ball's next event. Packed into 20 bytes instead of 24 (its time then starts 4 bytes
+/// into a line, which costs x86 and ARM processors nothing): each ball keeps two of these,
+/// its next event and its bounce, and with 100,000 balls every byte a ball keeps counts
+/// against what the cache holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, packed(4))]
 pub(super) struct Event {
     /// When, in frames since the start of the step.
     pub time: f64,
