@@ -206,3 +206,58 @@ fn crossing(path: &Poly, border: f64, towards: i8, left: f64) -> Option<f64> {
     // The distance to the far side of the border, which falls below zero on passing it.
     (*path * -side + side * border).first_negative(left)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_ball_goes_into_the_cell_around_its_centre_wherever_the_grid_lies() {
+        // Balls far from the origin, without walls: the grid starts at the top-left ball.
+        let balls: Vec<Ball> = (0..50)
+            .map(|k| {
+                let (x, y) = (
+                    300.0 + f64::from(k * 37 % 400),
+                    500.0 + f64::from(k * 53 % 400),
+                );
+                Ball::new(x, y, 0.0, 0.0, 3.0, 0)
+            })
+            .collect();
+        let mut cells = Cells::default();
+        cells.rebuild(&balls, None);
+        for (ball, at) in balls.iter().zip(&cells.at) {
+            let low = [cells.left, cells.top].map(|origin| origin - cells.margin);
+            let cell_low = [0, 1].map(|a| low[a] + f64::from(at[a]) * cells.size);
+            let inside = [ball.x, ball.y].iter().zip(cell_low).all(|(&centre, low)| {
+                (low..=low + cells.size + 2.0 * cells.margin).contains(&centre)
+            });
+            assert!(
+                inside,
+                "ball at ({}, {}) put in cell {at:?}",
+                ball.x, ball.y
+            );
+        }
+    }
+
+    #[test]
+    fn a_grid_at_its_most_cells_per_ball_holds_what_the_memory_budget_counts() {
+        // 10,000 balls of radius 1, 100 px apart: the cells widen until there are
+        // `MAX_CELLS_PER_BALL` a ball (a little more: a row and a column are added at the
+        // edges), the most a grid has.
+        let balls: Vec<Ball> = (0..10_000)
+            .map(|k| {
+                let (column, row) = (f64::from(k % 100), f64::from(k / 100));
+                Ball::new(column * 100.0, row * 100.0, 0.0, 0.0, 1.0, 0)
+            })
+            .collect();
+        let mut cells = Cells::default();
+        cells.rebuild(&balls, None);
+        let held = cells.at.capacity() * size_of::<[u32; 2]>() + cells.balls.bytes();
+        let per_ball = held as f64 / balls.len() as f64;
+        let counted = Cells::BYTES_PER_BALL as f64;
+        assert!(
+            (per_ball - counted).abs() < 1.0,
+            "the grid holds {per_ball} bytes a ball; the budget counts {counted}"
+        );
+    }
+}

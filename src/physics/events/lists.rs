@@ -67,6 +67,13 @@ impl Lists {
         (ball != NONE).then_some(ball as usize)
     }
 
+    /// The bytes it holds, for the tests of the memory budget's counts.
+    #[cfg(test)]
+    pub(crate) fn bytes(&self) -> usize {
+        let lengths = [&self.head, &self.list, &self.next, &self.prev].map(Vec::capacity);
+        lengths.iter().sum::<usize>() * size_of::<u32>()
+    }
+
     /// The balls in list `list`, most recently put in first.
     pub(crate) fn balls(&self, list: usize) -> impl Iterator<Item = usize> + '_ {
         let mut ball = self.head[list];
