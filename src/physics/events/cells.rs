@@ -106,16 +106,20 @@ impl Cells {
         row * self.columns + column
     }
 
+    /// Ball `i`'s cell's column and row.
+    fn place(&self, i: usize) -> [usize; 2] {
+        self.at[i].map(|index| index as usize)
+    }
+
     /// Puts ball `i` in the cell `at[i]` says.
     fn link(&mut self, i: usize) {
-        self.balls
-            .insert(i, self.cell(self.at[i].map(|index| index as usize)));
+        self.balls.insert(i, self.cell(self.place(i)));
     }
 
     /// Calls `visit` with every ball in ball `i`'s cell and the eight around it (`i` included).
     pub(crate) fn neighbours(&self, i: usize, visit: impl FnMut(usize)) {
-        let counts = [self.columns, self.rows];
-        let around = [0, 1].map(|a| around(self.at[i][a] as usize, counts[a]));
+        let (place, counts) = (self.place(i), [self.columns, self.rows]);
+        let around = [0, 1].map(|a| around(place[a], counts[a]));
         self.visit_cells(around, visit);
     }
 
@@ -123,11 +127,11 @@ impl Cells {
     /// towards `towards`, brought around it: the far row (or column) of its new neighbourhood,
     /// three cells (fewer at the grid's edge, none past it).
     pub(crate) fn entered(&self, i: usize, axis: u8, towards: i8, visit: impl FnMut(usize)) {
-        let counts = [self.columns, self.rows];
-        let mut cells = [0, 1].map(|a| around(self.at[i][a] as usize, counts[a]));
+        let (place, counts) = (self.place(i), [self.columns, self.rows]);
+        let mut cells = [0, 1].map(|a| around(place[a], counts[a]));
         let a = usize::from(axis);
         // Past the first cell this wraps to `usize::MAX`, past the last it reaches `count`.
-        let far = (self.at[i][a] as usize).wrapping_add_signed(isize::from(towards));
+        let far = place[a].wrapping_add_signed(isize::from(towards));
         if far >= counts[a] {
             return;
         }
@@ -151,10 +155,11 @@ impl Cells {
     pub(crate) fn exit(&self, i: usize, path: &[Poly; 2], left: f64) -> Option<(f64, u8, i8)> {
         let counts = [self.columns, self.rows];
         let origin = [self.left, self.top];
+        let place = self.place(i);
         let mut first: Option<(f64, u8, i8)> = None;
         for axis in 0..2u8 {
             let a = usize::from(axis);
-            let index = self.at[i][a] as usize;
+            let index = place[a];
             let low = origin[a] + index as f64 * self.size - self.margin;
             let high = low + self.size + 2.0 * self.margin;
             let mut try_border = |border: f64, towards: i8| {
