@@ -566,7 +566,7 @@ impl EventDriven {
                 Integrator::ExplicitEuler | Integrator::SemiImplicitEuler
             ) || (forces.gravity.is_none() && forces.drag.is_none())
         };
-        let touch = if straight(&self.flight[i]) && straight(&self.flight[j]) {
+        let touch = if straight(self.flight(i, step)) && straight(self.flight(j, step)) {
             let offset = other.position() + other.velocity() * behind - ball.position();
             let velocity = other.velocity() - ball.velocity();
             toi::straight(offset, velocity, reach, end)
