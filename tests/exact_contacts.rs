@@ -404,3 +404,44 @@ fn the_pile_preset_in_exact_mode_falls_asleep_and_then_costs_no_events() {
         );
     }
 }
+
+#[test]
+fn a_ball_falling_onto_a_sleeping_ball_meets_it_on_its_parabola() {
+    // Ball A rests on the floor of the box and sleeps: its flight is a straight one, gravity
+    // taken away. Ball B falls from rest 110 px above touching it, under gravity 0.5
+    // px/frame²: on its parabola it touches A at √(2·110/0.5) ≈ 20.98 frames. Taken as a
+    // straight line from the step's start (10 px/frame from 10 px away), the touch would
+    // come at frame 21, with B a quarter of a pixel inside A.
+    for integrator in [Integrator::VelocityVerlet, Integrator::Rk4] {
+        let pair = vec![
+            ball(160.0, 230.0, 0.0, 0.0, 10.0),
+            ball(160.0, 100.0, 0.0, 0.0, 10.0),
+        ];
+        let effects = Effects {
+            gravity: Some(Vec2::new(0.0, 0.5)),
+            walls: Some(Walls {
+                width: 320.0,
+                height: 240.0,
+                damping: 0.5,
+            }),
+            ..Effects::default()
+        };
+        let mut simulation = Simulation::new(pair, effects, exact(integrator), Some(1.0));
+        let mut collided = false;
+        for frame in 1..=22 {
+            simulation.step();
+            collided |= simulation
+                .event_counts()
+                .is_some_and(|c| c.ball_collisions > 0);
+            let overlap = deepest_overlap(simulation.balls()) / 10.0;
+            assert!(
+                overlap < 1e-6,
+                "{integrator:?}, frame {frame}: the balls overlap by {overlap} r"
+            );
+        }
+        assert!(
+            collided,
+            "{integrator:?}: expected B to strike A by frame 22"
+        );
+    }
+}
