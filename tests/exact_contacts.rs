@@ -312,12 +312,9 @@ fn a_ball_dropped_on_a_floor_in_exact_mode_bounces_when_and_where_the_closed_for
     }
 }
 
-/// Seeds of the pile's jittered start: each drops the balls differently.
-const PILE_SEEDS: u64 = 12;
-
-#[test]
-fn the_150_ball_pile_comes_to_rest_without_overlap_and_every_frame_finishes() {
-    let effects = Effects {
+/// The lesson's box under its gravity, with walls that keep half the speed: where piles fall.
+fn pile_box() -> Effects {
+    Effects {
         gravity: Some(Vec2::new(0.0, 0.5)),
         walls: Some(Walls {
             width: 320.0,
@@ -325,7 +322,15 @@ fn the_150_ball_pile_comes_to_rest_without_overlap_and_every_frame_finishes() {
             damping: 0.5,
         }),
         ..Effects::default()
-    };
+    }
+}
+
+/// Seeds of the pile's jittered start: each drops the balls differently.
+const PILE_SEEDS: u64 = 12;
+
+#[test]
+fn the_150_ball_pile_comes_to_rest_without_overlap_and_every_frame_finishes() {
+    let effects = pile_box();
     let cap = MAX_EVENTS_PER_BALL * 150;
     for seed in 1..=PILE_SEEDS {
         let balls = jittered_lattice(150, 6.0, 320.0, 2.0, seed);
@@ -417,15 +422,7 @@ fn a_ball_falling_onto_a_sleeping_ball_meets_it_on_its_parabola() {
             ball(160.0, 230.0, 0.0, 0.0, 10.0),
             ball(160.0, 100.0, 0.0, 0.0, 10.0),
         ];
-        let effects = Effects {
-            gravity: Some(Vec2::new(0.0, 0.5)),
-            walls: Some(Walls {
-                width: 320.0,
-                height: 240.0,
-                damping: 0.5,
-            }),
-            ..Effects::default()
-        };
+        let effects = pile_box();
         let mut simulation = Simulation::new(pair, effects, exact(integrator), Some(1.0));
         let mut collided = false;
         for frame in 1..=22 {
