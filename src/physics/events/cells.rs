@@ -31,20 +31,17 @@ pub(super) struct Cells {
     margin: f64,
     columns: usize,
     rows: usize,
-    /// The balls in each cell.
-    balls: Lists,
-    /// Per ball: its cell's column and row (32 bits each, half of `usize`: a grid has at
-    /// most `MAX_CELLS_PER_BALL` cells a ball, and every byte a ball keeps counts against
+    /// The balls in each cell (a ball's cell is the number of its list: its column and row
+    /// are worked out from it rather than kept, since every byte a ball keeps counts against
     /// the cache).
-    at: Vec<[u32; 2]>,
+    balls: Lists,
 }
 
 impl Cells {
-    /// Memory per ball, bytes: its cell's column and row, its place in the cell's list, and
-    /// up to `MAX_CELLS_PER_BALL` cells' list heads.
+    /// Memory per ball, bytes: its place in its cell's list, and up to `MAX_CELLS_PER_BALL`
+    /// cells' list heads.
     pub(crate) const BYTES_PER_BALL: u64 =
-        (size_of::<[u32; 2]>() + MAX_CELLS_PER_BALL as usize * size_of::<u32>()) as u64
-            + Lists::BYTES_PER_BALL;
+        (MAX_CELLS_PER_BALL as usize * size_of::<u32>()) as u64 + Lists::BYTES_PER_BALL;
 
     /// Lays a grid over the balls as they are now and over `area` (the box from the origin to
     /// this corner, if there is one: the balls will spread over it), and puts each ball in its
@@ -80,15 +77,10 @@ impl Cells {
         (self.left, self.top) = (left, top);
 
         self.balls.reset(self.columns * self.rows, balls.len());
-        self.at.clear();
-        // Exactly one place per ball, as the memory budget counts (pushing would grow it to
-        // the next power of two).
-        self.at.reserve_exact(balls.len());
         for (i, ball) in balls.iter().enumerate() {
             let column = (((ball.x - left) / self.size) as usize).min(self.columns - 1);
             let row = (((ball.y - top) / self.size) as usize).min(self.rows - 1);
-            self.at.push([column as u32, row as u32]);
-            self.link(i);
+            self.balls.insert(i, self.cell([column, row]));
         }
     }
 
@@ -108,12 +100,9 @@ impl Cells {
 
     /// Ball `i`'s cell's column and row.
     fn place(&self, i: usize) -> [usize; 2] {
-        self.at[i].map(|index| index as usize)
-    }
-
-    /// Puts ball `i` in the cell `at[i]` says.
-    fn link(&mut self, i: usize) {
-        self.balls.insert(i, self.cell(self.place(i)));
+        // In 32 bits, where a division is the quicker (a grid's cells are numbered in 32).
+        let (cell, columns) = (self.balls.list(i) as u32, self.columns as u32);
+        [cell % columns, cell / columns].map(|index| index as usize)
     }
 
     /// Calls `visit` with every ball in ball `i`'s cell and the eight around it (`i` included).
@@ -182,10 +171,11 @@ impl Cells {
 
     /// Moves ball `i` into the next cell along `axis` towards `towards`.
     pub(crate) fn shift(&mut self, i: usize, axis: u8, towards: i8) {
+        let mut place = self.place(i);
+        let at = &mut place[usize::from(axis)];
+        *at = at.wrapping_add_signed(isize::from(towards));
         self.balls.remove(i);
-        let at = &mut self.at[i][usize::from(axis)];
-        *at = at.wrapping_add_signed(i32::from(towards));
-        self.link(i);
+        self.balls.insert(i, self.cell(place));
     }
 }
 
@@ -230,9 +220,10 @@ mod tests {
             .collect();
         let mut cells = Cells::default();
         cells.rebuild(&balls, None);
-        for (ball, at) in balls.iter().zip(&cells.at) {
+        for (i, ball) in balls.iter().enumerate() {
+            let at = cells.place(i);
             let low = [cells.left, cells.top].map(|origin| origin - cells.margin);
-            let cell_low = [0, 1].map(|a| low[a] + f64::from(at[a]) * cells.size);
+            let cell_low = [0, 1].map(|a| low[a] + at[a] as f64 * cells.size);
             let inside = [ball.x, ball.y].iter().zip(cell_low).all(|(&centre, low)| {
                 (low..=low + cells.size + 2.0 * cells.margin).contains(&centre)
             });
@@ -257,7 +248,7 @@ mod tests {
             .collect();
         let mut cells = Cells::default();
         cells.rebuild(&balls, None);
-        let held = cells.at.capacity() * size_of::<[u32; 2]>() + cells.balls.bytes();
+        let held = cells.balls.bytes();
         let per_ball = held as f64 / balls.len() as f64;
         let counted = Cells::BYTES_PER_BALL as f64;
         assert!(

@@ -61,6 +61,12 @@ impl Lists {
         self.list[ball] = NONE;
     }
 
+    /// The list `ball` is in (it must be in one).
+    pub(crate) fn list(&self, ball: usize) -> usize {
+        debug_assert_ne!(self.list[ball], NONE, "ball {ball} is in no list");
+        self.list[ball] as usize
+    }
+
     /// The first ball of list `list`, if it holds any.
     pub(crate) fn first(&self, list: usize) -> Option<usize> {
         let ball = self.head[list];

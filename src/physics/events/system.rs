@@ -241,7 +241,7 @@ impl EventDriven {
             }
             events += 1;
             self.fly(&mut balls[i], i, now, step);
-            self.resolve(balls, i, event.kind, now, step);
+            self.resolve(balls, i, event.kind(), now, step);
         }
         (events, step.forces.dt)
     }
@@ -518,7 +518,7 @@ impl EventDriven {
         let now = self.clock[i];
         let bounce = self.bounce[i];
         // The earliest so far, as time from now; later candidates are not looked for.
-        let mut first = (bounce.time.min(step.horizon) - now, bounce.kind);
+        let mut first = (bounce.time.min(step.horizon) - now, bounce.kind());
         if let Some((time, axis, towards)) = self.cells.exit(i, path, first.0) {
             first = (time, EventKind::Cell { axis, towards });
         }
