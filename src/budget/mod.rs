@@ -124,10 +124,24 @@ fn suggested_seconds(needed: f64) -> f64 {
     }
 }
 
-/// The predicted seconds of the physics alone of a whole run of a validated `scene`
-/// (stepping the balls, exact mode's events; no drawing, no GIF), from a pilot run.
-pub(crate) fn physics_seconds(scene: &Scene) -> f64 {
-    physics_ns(scene, &Activity::of(scene)) * 1e-9
+/// What a pilot run found the physics of a scene doing, to predict whole runs from: of the
+/// scene it ran, or of the same scene with its frames cut into other substeps. Those do the
+/// same events and step the same balls, only more often: the cost model takes the substeps
+/// from the scene it is asked about, so one pilot serves them all.
+pub(crate) struct PhysicsPilot(Activity);
+
+impl PhysicsPilot {
+    /// Pilots the physics of a validated `scene`.
+    pub(crate) fn of(scene: &Scene) -> PhysicsPilot {
+        PhysicsPilot(Activity::of(scene))
+    }
+
+    /// The predicted seconds of the physics alone of a whole run of `scene` (stepping the
+    /// balls, exact mode's events; no drawing, no GIF): the piloted scene, or it with other
+    /// substeps.
+    pub(crate) fn seconds(&self, scene: &Scene) -> f64 {
+        physics_ns(scene, &self.0) * 1e-9
+    }
 }
 
 impl Estimate {

@@ -3,14 +3,15 @@
 //!
 //! A comparison runs the physics of the scene many times: the reference's refinements, each
 //! method once to draw it, and each method again and again to time it. Each run is costed by
-//! `physics_seconds`, the budget's prediction of a whole run from a pilot. Only the number of
+//! `PhysicsPilot`, the budget's prediction of a whole run from a pilot. Only the number of
 //! the reference's refinements cannot be known up front: it takes as many doublings as the
 //! scene needs to converge. A pilot finds out on the scene's first frames, and the whole run
 //! is assumed to need at least as many, and at least one doubling past the finest method,
 //! within the reference's work limit.
 
-use crate::budget::{physics_seconds, Budget, OverBudget};
+use crate::budget::{Budget, OverBudget, PhysicsPilot};
 use crate::job::Job;
+use crate::physics::{CollisionMode, Integrator};
 use crate::scene::Scene;
 
 use super::measure::timing_seconds;
@@ -29,7 +30,7 @@ pub fn estimate_seconds(scene: &Scene, methods: &[Method]) -> f64 {
     let bare = without_trails(scene);
     let mut costs = Costs {
         scene: &bare,
-        known: Vec::new(),
+        pilots: Vec::new(),
     };
     let first = costs.of(rk4(1));
     let last = last_substeps(&bare, methods, first);
@@ -39,22 +40,28 @@ pub fn estimate_seconds(scene: &Scene, methods: &[Method]) -> f64 {
     first + finer + runs.iter().sum::<f64>() + timing_seconds(&runs)
 }
 
-/// The predicted seconds of runs of a scene, each method's costed once however often it is
-/// asked for (a listed method can be one of the reference's refinements): each costing runs
-/// a pilot.
+/// The predicted seconds of runs of a scene by several methods. One pilot serves every
+/// method with the same integrator and collisions, whatever its substeps (the reference's
+/// refinements, and a listed method that is one of them): each pilot costs about as much as
+/// a run of the scene's first frames, and a comparison's runs differ mostly in substeps.
 struct Costs<'a> {
     scene: &'a Scene,
-    known: Vec<(Method, f64)>,
+    pilots: Vec<((Integrator, CollisionMode), PhysicsPilot)>,
 }
 
 impl Costs<'_> {
     fn of(&mut self, method: Method) -> f64 {
-        if let Some(&(_, seconds)) = self.known.iter().find(|(m, _)| *m == method) {
-            return seconds;
-        }
-        let seconds = physics_seconds(&method.on(self.scene));
-        self.known.push((method, seconds));
-        seconds
+        let scene = method.on(self.scene);
+        let solver = (method.integrator, method.collisions);
+        let piloted = self
+            .pilots
+            .iter()
+            .position(|(piloted, _)| *piloted == solver);
+        let k = piloted.unwrap_or_else(|| {
+            self.pilots.push((solver, PhysicsPilot::of(&scene)));
+            self.pilots.len() - 1
+        });
+        self.pilots[k].1.seconds(&scene)
     }
 }
 
@@ -81,4 +88,35 @@ fn last_substeps(scene: &Scene, methods: &[Method], first: f64) -> u32 {
     // A pilot whose balls leave the finite numbers foretells a refused run; count the most.
     Reference::refined(&prefix, methods, most, &Job::new())
         .map_or(most, |pilot| pilot.method.substeps)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compare::methods::LESSON;
+    use crate::scene::file::preset;
+
+    #[test]
+    fn runs_that_differ_only_in_substeps_share_one_pilot_and_cost_more_with_more() {
+        let scene = Scene {
+            frames: 20,
+            ..preset("moon", 1).unwrap()
+        };
+        let mut costs = Costs {
+            scene: &scene,
+            pilots: Vec::new(),
+        };
+        let (one, four) = (costs.of(rk4(1)), costs.of(rk4(4)));
+        costs.of(LESSON);
+        costs.of(rk4(2));
+        assert_eq!(
+            costs.pilots.len(),
+            2,
+            "RK4 at 1, 2 and 4 substeps and the lesson's method: expected 2 pilots"
+        );
+        assert!(
+            four > 2.0 * one,
+            "4 substeps predicted at {four} s, 1 at {one} s: expected the steps to cost more"
+        );
+    }
 }
