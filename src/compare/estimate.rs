@@ -97,6 +97,21 @@ mod tests {
     use crate::scene::file::preset;
 
     #[test]
+    fn a_comparison_of_more_frames_is_predicted_to_take_longer() {
+        let moon = |frames| Scene {
+            frames,
+            ..preset("moon", 1).unwrap()
+        };
+        let methods = [LESSON, rk4(4)];
+        let short = estimate_seconds(&moon(20), &methods);
+        let long = estimate_seconds(&moon(200), &methods);
+        assert!(
+            0.0 < short && short < long,
+            "20 frames predicted at {short} s, 200 at {long} s"
+        );
+    }
+
+    #[test]
     fn runs_that_differ_only_in_substeps_share_one_pilot_and_cost_more_with_more() {
         let scene = Scene {
             frames: 20,
