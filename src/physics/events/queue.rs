@@ -64,6 +64,8 @@ impl What {
     /// The first of the four cell crossings: `CELL - (2·axis + 1)` towards −1 and
     /// `CELL - 2·axis` towards +1 (with `axis` 0 or 1).
     const CELL: u32 = u32::MAX - 2;
+    /// The largest ball number an event holds: the next four are the cell crossings'.
+    const LARGEST_BALL: u32 = What::CELL - 4;
 
     const fn of(kind: EventKind) -> What {
         What(match kind {
@@ -80,7 +82,7 @@ impl What {
         match self.0 {
             What::NOTHING => EventKind::Nothing,
             What::CONTACT => EventKind::Contact,
-            j if j < What::CELL - 3 => EventKind::Ball(j),
+            j if j <= What::LARGEST_BALL => EventKind::Ball(j),
             cell => {
                 let below = What::CELL - cell;
                 let towards = if below % 2 == 1 { -1 } else { 1 };
