@@ -88,7 +88,11 @@ pub(super) struct FixedContact {
 pub(super) struct ContactState {
     pub normal: Vec2,
     /// Gap at the start of the sub-step, px (negative: overlap).
-    pub separation: f64,
+    separation: f64,
+    /// The relative normal speed, px/frame, that a contact which does not bounce is brought
+    /// to: closing by no more than the gap within the sub-step (0 if it touches). It is the
+    /// same in each of a sub-step's velocity passes, so it is worked out once, with the gap.
+    resting_target: f64,
     restitution: f64,
     /// `1 / (1/m_a + 1/m_b)`: the impulse that changes the relative normal speed by 1.
     pub mass: f64,
@@ -141,21 +145,31 @@ impl Push {
 }
 
 impl ContactState {
-    pub(crate) fn new(
-        normal: Vec2,
-        separation: f64,
-        restitution: f64,
-        mass: f64,
-        key: u64,
-    ) -> ContactState {
+    /// A contact along `normal`, touching until its gap is measured ([`ContactState::measure`]),
+    /// as every stage that solves a contact does first.
+    pub(crate) fn new(normal: Vec2, restitution: f64, mass: f64, key: u64) -> ContactState {
         ContactState {
             normal,
-            separation,
+            separation: 0.0,
+            resting_target: 0.0,
             restitution,
             mass,
             impulse: 0.0,
             key,
         }
+    }
+
+    /// Takes `separation` as the gap at the start of a sub-step of `h` frames.
+    pub(crate) fn measure(&mut self, separation: f64, h: f64) {
+        self.separation = separation;
+        // Resting, or speculative: close by no more than the gap within the sub-step. Most of
+        // a pile's contacts overlap a little, and may not close at all: for them the division
+        // gives −0, which is written out (a division costs as much as the rest of the stage).
+        self.resting_target = if separation < 0.0 {
+            -0.0
+        } else {
+            -separation.max(0.0) / h
+        };
     }
 
     /// The velocity pass for one contact whose relative normal speed is `speed` (negative:
@@ -170,8 +184,7 @@ impl ContactState {
         let target = if bounces {
             rebound
         } else {
-            // Resting, or speculative: close by no more than the gap within the sub-step.
-            -self.separation.max(0.0) / sub.h
+            self.resting_target
         };
         let total = (self.impulse + self.mass * (target - speed)).max(0.0);
         let change = total - self.impulse;

@@ -5,7 +5,7 @@
 //!   that can touch within the step (the grid grows each ball by the distance it can travel).
 //!   A contact with a gap is *speculative*: it only forbids closing by more than the gap. The
 //!   solver works on a copy of the balls in the grid's order. Each contact gets the impulse it
-//!   ended the last step with, from the warm-start memory ([`WarmStartMemory`]), and the
+//!   ended the last step with, from the warm-start memory (`super::warm_start_memory`), and the
 //!   balls with contacts fall into islands (`super::island`).
 //! - **Warm start** ([`warm_start`]; under gravity only): each contact pushes again with its
 //!   total impulse of the sub-step before (the previous step's, at first). A stack that stood
@@ -33,61 +33,18 @@
 //! Warm start, solve and relax work on one island's contacts; the others on the whole step's.
 
 use super::contact::{
-    both_mut, coincident_normal, deeper_than_slop, pair_gap, Body, ContactState, Contacts,
-    FixedContact, Gap, PairContact, Push,
+    both_mut, coincident_normal, deeper_than_slop, pair_gap, Body, ContactState, FixedContact, Gap,
+    PairContact, Push,
 };
 use super::island::Island;
 use super::sleep::Sleep;
 use super::step_context::{StepContext, Stepping};
+use super::warm_start_memory::WarmStartMemory;
 use crate::physics::ball::{mass, Ball};
 use crate::physics::effects::Effects;
 use crate::physics::tolerances::{MAX_PAIRS_PER_BALL, PAIR_MARGIN};
 use crate::physics::vec2::Vec2;
 use crate::work::{tally, Work};
-
-/// The warm-start memory, all of the contacts that carries from one step to the next: the
-/// impulse each contact ended the last step with, by contact key, sorted by key (only those
-/// above 0).
-#[derive(Clone, Debug, Default)]
-pub(super) struct WarmStartMemory {
-    impulses: Vec<(u64, f64)>,
-}
-
-impl WarmStartMemory {
-    /// Gives each contact the impulse it ended the last step with (0 if it is new).
-    fn recall(&self, contacts: &mut Contacts) {
-        let remembered = &self.impulses;
-        let states = contacts.pairs.iter_mut().map(|c| &mut c.state);
-        for state in states.chain(contacts.fixed.iter_mut().map(|c| &mut c.state)) {
-            state.impulse = remembered
-                .binary_search_by_key(&state.key, |&(key, _)| key)
-                .map_or(0.0, |found| remembered[found].1);
-        }
-    }
-
-    /// Keeps the contacts' impulses (those above 0) for the next step's warm start.
-    fn store(&mut self, contacts: &Contacts) {
-        self.impulses.clear();
-        let states = contacts.pairs.iter().map(|c| &c.state);
-        self.impulses.extend(
-            states
-                .chain(contacts.fixed.iter().map(|c| &c.state))
-                .map(|state| (state.key, state.impulse))
-                .filter(|&(_, impulse)| impulse > 0.0),
-        );
-        self.impulses.sort_unstable_by_key(|&(key, _)| key);
-    }
-
-    /// Takes the `kept` impulses (of islands that woke) into those remembered.
-    fn keep(&mut self, kept: &mut Vec<(u64, f64)>) {
-        if kept.is_empty() {
-            return; // the common case: nothing woke
-        }
-        self.impulses.append(kept);
-        self.impulses.sort_unstable_by_key(|&(key, _)| key);
-        self.impulses.dedup_by_key(|&mut (key, _)| key);
-    }
-}
 
 /// What decides, as contacts are found, whether one can touch within the step.
 #[derive(Clone, Copy, Debug)]
@@ -245,7 +202,7 @@ fn find_fixed(
         let approach = ball.velocity.dot(normal);
         if lookahead.can_touch(separation, approach, PAIR_MARGIN * ball.radius) {
             let key = (i as u64) << 32 | (u64::from(u32::MAX) - id);
-            let state = ContactState::new(normal, separation, restitution, mass(ball.radius), key);
+            let state = ContactState::new(normal, restitution, mass(ball.radius), key);
             fixed.push(FixedContact {
                 ball: k,
                 offset,
@@ -342,7 +299,7 @@ fn pair_contact(
         a,
         b,
         reach: ball_a.radius + ball_b.radius,
-        state: ContactState::new(gap.normal, gap.separation, restitution, mass, key),
+        state: ContactState::new(gap.normal, restitution, mass, key),
         inverse_a: 1.0 / mass_a,
         inverse_b: 1.0 / mass_b,
     }
@@ -351,16 +308,18 @@ fn pair_contact(
 /// The warm start stage of `island`: applies each contact's impulse of the last sub-step
 /// again, and measures its gap anew.
 pub(super) fn warm_start(context: &mut StepContext, island: &Island) {
+    let h = context.stepping.sub.h;
     let (bodies, contacts) = (&mut context.bodies, &mut context.contacts);
     for contact in &mut contacts.pairs[island.pairs.clone()] {
         let (a, b) = both_mut(bodies, contact.a, contact.b);
         let gap = pair_gap(a, b, contact.reach, || contact.state.normal);
-        (contact.state.separation, contact.state.normal) = (gap.separation, gap.normal);
+        contact.state.normal = gap.normal;
+        contact.state.measure(gap.separation, h);
         contact.push_velocities(a, b, contact.state.impulse);
     }
     for contact in &mut contacts.fixed[island.fixed.clone()] {
         let ball = &mut bodies[contact.ball];
-        contact.state.separation = contact.gap(ball);
+        contact.state.measure(contact.gap(ball), h);
         let impulse = contact.state.impulse / contact.state.mass;
         ball.velocity += impulse * contact.state.normal;
     }
@@ -419,7 +378,7 @@ pub(super) fn restitution(context: &mut StepContext, mut moved: impl FnMut(&Body
         let mut contact = pair_contact(bodies, order, *restitution, a, b, gap);
         let (ball_a, ball_b) = both_mut(bodies, a, b);
         contact.relax(ball_a, ball_b, Push::Whole);
-        contact.state.separation = 0.0;
+        contact.state.measure(0.0, stepping.sub.h);
         contact.solve_velocity(ball_a, ball_b, stepping.sub);
         moved(ball_a, order[a]);
         moved(ball_b, order[b]);

@@ -79,6 +79,12 @@ impl Islands {
             parent[a.max(b)] = a.min(b);
         }
         self.number(contacts, asleep, count);
+        if self.list.len() == 1 {
+            // One island (a pile, once it has formed): its balls and contacts are together
+            // already, in the order found, and its ranges are their counts from 0.
+            self.balls.clone_from(&self.with_contact);
+            return;
+        }
         // Turn the counts into empty ranges where each island's balls and contacts will be,
         // one island after another; placing one extends its island's range (a counting sort).
         let mut starts = [0; 3];
@@ -238,7 +244,7 @@ mod tests {
             a,
             b,
             reach: 2.0,
-            state: ContactState::new(Vec2::new(1.0, 0.0), 0.0, 0.5, 1.0, key),
+            state: ContactState::new(Vec2::new(1.0, 0.0), 0.5, 1.0, key),
             inverse_a: 1.0,
             inverse_b: 1.0,
         }

@@ -19,6 +19,8 @@
 //! - `contact`: the contacts themselves and what one contact does in each stage.
 //! - `island` (`island.c`): the balls joined by contacts, each island solved on its own.
 //! - `touch_by_touch`: islands without forces, solved at the moment each contact touches.
+//! - `warm_start_memory`: each contact's last impulse, kept from step to step by its key in a
+//!   hash table, as Box2D keeps its contacts (`table.c`).
 //! - `sleep` (`solver_set.c`): islands that have come to rest sleep, and cost nothing, until
 //!   an awake ball can touch them.
 
@@ -30,6 +32,7 @@ mod sleep;
 mod solver;
 mod step_context;
 mod touch_by_touch;
+mod warm_start_memory;
 
 pub use grid::Grid;
 pub(crate) use solver::ContactSolver;

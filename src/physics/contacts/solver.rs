@@ -39,12 +39,13 @@
 //! Everything happens in a fixed order (the grid's), so the same balls give the same bytes.
 
 use super::contact::{Body, Push};
-use super::contact_solver::{self, WarmStartMemory};
+use super::contact_solver;
 use super::grid::Grid;
 use super::island::Island;
 use super::sleep::Sleep;
 use super::step_context::{StepContext, Stepping};
 use super::touch_by_touch::solve_touch_by_touch;
+use super::warm_start_memory::WarmStartMemory;
 use crate::physics::ball::Ball;
 use crate::physics::effects::Effects;
 use crate::physics::floor::Floor;
@@ -94,10 +95,11 @@ const SUB_STEP: [Stage; 5] = [
 impl ContactSolver {
     /// The solver's memory per ball at most, bytes, for the budget: the grid's, and up to
     /// `MAX_PAIRS_PER_BALL` contacts with their warm-start memory and the scratch they are
-    /// solved in, with what their growth by doubling leaves spare (measured: 4,869 B a ball
-    /// in all, the grid's included, on 20,000 balls piled on one spot, where every ball has
-    /// its most contacts; `tests/allocations.rs` holds the estimate to that).
-    pub(crate) const BYTES_PER_BALL: u64 = Grid::BYTES_PER_BALL + 4900;
+    /// solved in, with what their growth by doubling and the warm-start memory's half-free
+    /// hash table leave spare (measured: 5,233 B a ball in all, the grid's included, on
+    /// 20,000 balls piled on one spot, where every ball has its most contacts;
+    /// `tests/allocations.rs` holds the estimate to that).
+    pub(crate) const BYTES_PER_BALL: u64 = Grid::BYTES_PER_BALL + 5300;
 
     /// A solver for ball-ball contacts that keep `restitution` of the approach speed.
     pub(crate) fn new(restitution: f64) -> ContactSolver {

@@ -87,12 +87,13 @@ fn solve_touch(context: &mut StepContext, island: &Island, first: usize, sub: Su
         let contact = &mut pairs[first];
         let (a, b) = both_mut(bodies, contact.a, contact.b);
         let gap = pair_gap(a, b, contact.reach, || contact.state.normal);
-        (contact.state.separation, contact.state.normal) = (gap.separation.min(0.0), gap.normal);
+        contact.state.normal = gap.normal;
+        contact.state.measure(gap.separation.min(0.0), sub.h);
         contact.solve_velocity(a, b, sub);
     } else {
         let contact = &mut contacts.fixed[island.fixed.clone()][first - pairs.len()];
         let ball = &mut bodies[contact.ball];
-        contact.state.separation = contact.gap(ball).min(0.0);
+        contact.state.measure(contact.gap(ball).min(0.0), sub.h);
         contact.solve_velocity(ball, sub);
     }
 }
