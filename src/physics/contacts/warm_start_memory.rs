@@ -136,6 +136,25 @@ mod tests {
         }
     }
 
+    /// Asserts that `memory` keeps half its slots free, and that no lookup walks far past
+    /// its key's home slot (the hash spreads the keys).
+    fn assert_at_most_half_full_with_short_probes(memory: &WarmStartMemory) {
+        let slots = memory.slots.len();
+        assert!(
+            2 * memory.count <= slots,
+            "{} impulses in {slots} slots: more than half full",
+            memory.count
+        );
+        let walked = |(slot, &(key, _)): (usize, &(u64, f64))| {
+            (key != FREE).then(|| slot.wrapping_sub(memory.home(key)) & (slots - 1))
+        };
+        let longest = memory.slots.iter().enumerate().filter_map(walked).max();
+        assert!(
+            longest.unwrap_or(0) <= 8,
+            "a lookup walks {longest:?} slots past its home: expected at most 8"
+        );
+    }
+
     #[test]
     fn a_contact_recalls_the_impulse_it_stored_and_a_new_one_recalls_none() {
         // Keys as contacts have them, many sharing a half, so they crowd the same slots.
@@ -148,6 +167,7 @@ mod tests {
         let mut memory = WarmStartMemory::default();
         memory.store(&contacts);
         assert_eq!(memory.count, keys.len());
+        assert_at_most_half_full_with_short_probes(&memory);
         contacts.fixed.push(fixed(1 << 40, 3.0)); // new this step
         for contact in &mut contacts.fixed {
             contact.state.impulse = -1.0;
@@ -171,6 +191,7 @@ mod tests {
         memory.keep(&mut kept);
         assert!(kept.is_empty());
         assert_eq!(memory.count, 60);
+        assert_at_most_half_full_with_short_probes(&memory);
         let impulses: Vec<f64> = (0..61).map(|k| memory.impulse(k)).collect();
         let expected: Vec<f64> = (0..61)
             .map(|k| match k {
