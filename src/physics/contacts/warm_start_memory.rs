@@ -204,4 +204,25 @@ mod tests {
         memory.store(&Contacts::default());
         assert_eq!((memory.count, memory.impulse(3)), (0, 0.0));
     }
+
+    #[test]
+    fn the_table_grows_only_when_more_than_half_of_it_would_be_full() {
+        let mut memory = WarmStartMemory::default();
+        memory.store(&Contacts {
+            fixed: (0..20).map(|k| fixed(k, 1.0)).collect(),
+            ..Contacts::default()
+        });
+        assert_eq!(memory.slots.len(), 64);
+        // 32 impulses in 64 slots: half full, as the table may be.
+        memory.keep(&mut (20..32).map(|k| (k, 2.0)).collect());
+        assert_eq!((memory.count, memory.slots.len()), (32, 64));
+        // One more: it grows.
+        memory.keep(&mut vec![(32, 2.0)]);
+        assert_eq!((memory.count, memory.slots.len()), (33, 128));
+        assert_at_most_half_full_with_short_probes(&memory);
+        assert_eq!(
+            (memory.impulse(0), memory.impulse(31), memory.impulse(32)),
+            (1.0, 2.0, 2.0)
+        );
+    }
 }
