@@ -162,14 +162,8 @@ impl ContactState {
     /// Takes `separation` as the gap at the start of a sub-step of `h` frames.
     pub(crate) fn measure(&mut self, separation: f64, h: f64) {
         self.separation = separation;
-        // Resting, or speculative: close by no more than the gap within the sub-step. Most of
-        // a pile's contacts overlap a little, and may not close at all: for them the division
-        // gives −0, which is written out (a division costs as much as the rest of the stage).
-        self.resting_target = if separation < 0.0 {
-            -0.0
-        } else {
-            -separation.max(0.0) / h
-        };
+        // Resting, or speculative: close by no more than the gap within the sub-step.
+        self.resting_target = -separation.max(0.0) / h;
     }
 
     /// The velocity pass for one contact whose relative normal speed is `speed` (negative:
