@@ -73,29 +73,30 @@ impl WarmStartMemory {
         if self.slots.is_empty() {
             return 0.0;
         }
-        let mut slot = self.home(key);
-        loop {
-            match self.slots[slot] {
-                (found, impulse) if found == key => return impulse,
-                (FREE, _) => return 0.0,
-                _ => slot = (slot + 1) & (self.slots.len() - 1),
-            }
+        match self.slots[self.find(key)] {
+            (found, impulse) if found == key => impulse,
+            _ => 0.0,
         }
     }
 
     /// Remembers `impulse` for `key`, unless `key` is remembered already. There must be a
     /// free slot ([`WarmStartMemory::empty_for`] leaves half of them free).
     fn insert(&mut self, key: u64, impulse: f64) {
-        let mut slot = self.home(key);
-        loop {
-            match self.slots[slot].0 {
-                FREE => break,
-                found if found == key => return,
-                _ => slot = (slot + 1) & (self.slots.len() - 1),
-            }
+        let slot = self.find(key);
+        if self.slots[slot].0 == FREE {
+            self.slots[slot] = (key, impulse);
+            self.count += 1;
         }
-        self.slots[slot] = (key, impulse);
-        self.count += 1;
+    }
+
+    /// The slot that holds `key`, or else the free slot where it would go: the first of
+    /// either from its home slot on.
+    fn find(&self, key: u64) -> usize {
+        let mut slot = self.home(key);
+        while ![key, FREE].contains(&self.slots[slot].0) {
+            slot = (slot + 1) & (self.slots.len() - 1);
+        }
+        slot
     }
 
     /// Forgets every impulse, and makes room for `count` of them with at least half the
