@@ -226,4 +226,26 @@ mod tests {
             (1.0, 2.0, 2.0)
         );
     }
+
+    #[test]
+    fn keys_that_share_a_home_slot_each_find_their_own_even_past_the_tables_end() {
+        // Five keys whose search starts at the last slot of 16: they fill it, then wrap round
+        // to the first slots.
+        let mut memory = WarmStartMemory::default();
+        memory.empty_for(5);
+        assert_eq!(memory.slots.len(), 16);
+        let last = memory.slots.len() - 1;
+        let crowded: Vec<u64> = (0..).filter(|&k| memory.home(k) == last).take(6).collect();
+        let stored = &crowded[..5];
+        for (n, &key) in stored.iter().enumerate() {
+            memory.insert(key, n as f64 + 1.0);
+        }
+        let slots: Vec<u64> = [last, 0, 1, 2, 3].map(|slot| memory.slots[slot].0).into();
+        assert_eq!(slots, stored);
+        let recalled: Vec<f64> = crowded.iter().map(|&key| memory.impulse(key)).collect();
+        assert_eq!(recalled, [1.0, 2.0, 3.0, 4.0, 5.0, 0.0]);
+        memory.insert(stored[2], 9.0); // remembered already: kept as it was
+        assert_eq!((memory.count, memory.impulse(stored[2])), (5, 3.0));
+        assert_at_most_half_full_with_short_probes(&memory);
+    }
 }
