@@ -22,7 +22,8 @@ const FEWEST_SLOTS: usize = 16;
 #[derive(Clone, Debug, Default)]
 pub(super) struct WarmStartMemory {
     /// `(key, impulse)`, each at the first slot from its key's hash on that was free when it
-    /// came; `FREE` keys mark the free slots. A power of two long, or empty.
+    /// came; `FREE` keys mark the free slots, which hold an impulse of 0. A power of two long,
+    /// or empty.
     slots: Vec<(u64, f64)>,
     /// The slots in use.
     count: usize,
@@ -68,15 +69,12 @@ impl WarmStartMemory {
         }
     }
 
-    /// The impulse remembered for the contact `key`, or 0.
+    /// The impulse remembered for the contact `key`, or 0 (which a free slot holds).
     fn impulse(&self, key: u64) -> f64 {
         if self.slots.is_empty() {
             return 0.0;
         }
-        match self.slots[self.find(key)] {
-            (found, impulse) if found == key => impulse,
-            _ => 0.0,
-        }
+        self.slots[self.find(key)].1
     }
 
     /// Remembers `impulse` for `key`, unless `key` is remembered already. There must be a
